@@ -1,0 +1,699 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPE_3_H
+#define CGAL_CONFORMAL_ALPHA_SHAPE_3_H
+
+#include <CGAL/Conformal_alpha_shape_cell_base_3.h>
+#include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/poles.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/Iterator_range.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+
+/*!
+\ingroup PkgConformalAlphaShapes3Classes
+
+The conformal alpha shape filtration of a 3D point set (Cazals, Giesen, Pauly
+and Zomorodian, 2005), built on its Delaunay triangulation.
+
+Every vertex `p` carries a local scale `alpha_p+` (by default the distance to
+its pole, see `local_scale()`). A finite simplex `s` with ordinary alpha value
+`alpha(s)` (the radius, not squared, of its smallest empty circumscribing
+ball, attached to its cofaces when that ball is not empty) gets the conformal
+value `a(s) = alpha(s) / min_{p in s} alpha_p+`; vertices get 0. The conformal
+alpha complex at internal scale `a` is the set of simplices with `a(s) <= a`.
+Every value handled by this class is such a dimensionless ratio of radii:
+with all local scales equal to 1 the complex at `a` is the ordinary alpha
+complex of `CGAL::Alpha_shape_3` at its (squared) parameter `a*a`.
+
+Classification follows `CGAL::Alpha_shape_3` in `GENERAL` mode: a simplex is
+`EXTERIOR` when not in the complex, `INTERIOR` when all its incident cells
+are in it, `REGULAR` when it is in the complex, is a face of a
+higher-dimensional simplex of the complex and is not interior, and `SINGULAR`
+when it is in the complex but is a face of no higher-dimensional simplex of the
+complex. For a facet, `REGULAR` means exactly one of its two cells is in the
+complex; a surface sample's surface first appears as `SINGULAR` facets.
+
+Values are kept in the triangulation's own vertices and cells (five doubles
+per cell: the ordinary alpha of the cell and of its facets); edge values are
+computed when asked for. The sorted spectrum is computed on first use.
+
+The triangulation must not be modified after construction: its values would
+no longer be valid. Use `make_conformal_alpha_shape()` to rebuild.
+
+\tparam Dt a `Delaunay_triangulation_3` whose geometric traits class is a
+        CGAL kernel with `double` as field type (such as
+        `Exact_predicates_inexact_constructions_kernel`) and whose vertex and
+        cell bases are `Conformal_alpha_shape_vertex_base_3` and
+        `Conformal_alpha_shape_cell_base_3` (or derive from them).
+        Predicates are evaluated by the kernel (exactly with `Epick`);
+        values are computed and stored as `double`.
+*/
+template <class Dt>
+class Conformal_alpha_shape_3 : public Dt
+{
+public:
+  typedef Dt                                  Triangulation;
+  typedef typename Dt::Geom_traits            Gt;
+  typedef typename Gt::FT                     FT;
+  typedef typename Dt::Point                  Point;
+  typedef typename Dt::Vertex_handle          Vertex_handle;
+  typedef typename Dt::Cell_handle            Cell_handle;
+  typedef typename Dt::Facet                  Facet;
+  typedef typename Dt::Edge                   Edge;
+  typedef typename Dt::Simplex                Simplex;
+  typedef std::size_t                         size_type;
+
+  static_assert(std::is_same<FT, double>::value,
+                "Conformal_alpha_shape_3 needs a kernel with double coordinates, "
+                "such as Exact_predicates_inexact_constructions_kernel");
+
+  /// Same meaning as in `Alpha_shape_3`.
+  enum Classification_type { EXTERIOR, SINGULAR, REGULAR, INTERIOR };
+
+  /// Iterator over the sorted distinct conformal values.
+  typedef typename std::vector<FT>::const_iterator Alpha_iterator;
+
+  /// Range of the indices of the input points a vertex stands for.
+  typedef Iterator_range<const size_type*> Input_index_range;
+
+  /// \name Creation
+  /// @{
+
+  /// An empty shape; fill it with `make_conformal_alpha_shape()`.
+  explicit Conformal_alpha_shape_3(FT alpha = FT(0)) : m_alpha(alpha) {}
+
+  /// The shape of the points in `[first, last)`, local scales from poles.
+  /// \throws std::invalid_argument as `make_conformal_alpha_shape()`.
+  template <class InputIterator>
+  Conformal_alpha_shape_3(InputIterator first, InputIterator last, FT alpha = FT(0))
+    : m_alpha(alpha)
+  {
+    make_conformal_alpha_shape(first, last);
+  }
+
+  /// The shape of the points in `[first, last)` with caller-supplied local
+  /// scales, one per input point, read from `scales_first`.
+  template <class InputIterator, class ScaleIterator,
+            class = typename std::enable_if<!std::is_arithmetic<ScaleIterator>::value>::type>
+  Conformal_alpha_shape_3(InputIterator first, InputIterator last,
+                          ScaleIterator scales_first, FT alpha = FT(0))
+    : m_alpha(alpha)
+  {
+    make_conformal_alpha_shape(first, last, scales_first);
+  }
+
+  /*!
+  Clears the shape, then builds it for the points in `[first, last)` with
+  local scales from poles. Duplicate points collapse into one vertex that
+  remembers all their indices. Returns the number of input points.
+
+  \throws std::invalid_argument, leaving the shape empty, when a coordinate
+  is NaN or infinite (the message names the first such index), or when the
+  points do not span 3D (empty input, fewer than 4 distinct points, all
+  coplanar or collinear): the filtration needs a 3D triangulation.
+  */
+  template <class InputIterator>
+  size_type make_conformal_alpha_shape(InputIterator first, InputIterator last)
+  {
+    insert_points(first, last);
+    const std::vector<Pole> poles = Conformal_alpha_shapes_3::internal::compute_poles(*this);
+    for(Vertex_handle v : this->finite_vertex_handles())
+    {
+      v->set_pole_cell(poles[v->vertex_index()].cell);
+      v->set_local_scale(poles[v->vertex_index()].distance);
+    }
+    return m_input_vertices.size();
+  }
+
+  /*!
+  As above, but the local scale of input point `i` is `*(scales_first + i)`.
+  A vertex standing for duplicate points takes the smallest of their scales.
+  Poles are computed all the same.
+  \throws std::invalid_argument also when a scale is not finite and positive.
+  */
+  template <class InputIterator, class ScaleIterator>
+  size_type make_conformal_alpha_shape(InputIterator first, InputIterator last,
+                                       ScaleIterator scales_first)
+  {
+    make_conformal_alpha_shape(first, last);
+    for(Vertex_handle v : this->finite_vertex_handles())
+      v->set_local_scale(std::numeric_limits<double>::infinity());
+    for(size_type i = 0; i < m_input_vertices.size(); ++i, ++scales_first)
+    {
+      const double s = CGAL::to_double(*scales_first);
+      if(!(std::isfinite(s) && s > 0))
+      {
+        clear();
+        throw std::invalid_argument("Conformal_alpha_shape_3: local scale of input point "
+                                    + std::to_string(i) + " is not finite and positive");
+      }
+      Vertex_handle v = m_input_vertices[i];
+      v->set_local_scale((std::min)(v->local_scale(), s));
+    }
+    return m_input_vertices.size();
+  }
+
+  /// Empties the shape.
+  void clear()
+  {
+    Dt::clear();
+    m_input_vertices.clear();
+    m_input_offsets.clear();
+    m_input_indices.clear();
+    m_spectrum.clear();
+    m_spectrum_ready = false;
+  }
+  /// @}
+
+  /// \name Input points
+  /// @{
+  size_type number_of_input_points() const { return m_input_vertices.size(); }
+
+  /// The vertex standing for input point `i`.
+  Vertex_handle input_vertex(size_type i) const { return m_input_vertices[i]; }
+
+  /// The indices of the input points that `v` stands for, increasing.
+  Input_index_range input_indices(Vertex_handle v) const
+  {
+    CGAL_precondition(!this->is_infinite(v));
+    const size_type* base = m_input_indices.data();
+    return Input_index_range(base + m_input_offsets[v->vertex_index()],
+                             base + m_input_offsets[v->vertex_index() + 1]);
+  }
+  /// @}
+
+  /// \name Local scales
+  /// @{
+
+  /// The pole of `v`: the Voronoi vertex (circumcentre of a finite cell)
+  /// farthest from `v` on the side opposite to `v`'s positive pole direction
+  /// (the Amenta-Bern negative pole). On an unbounded Voronoi cell the
+  /// positive direction is the mean outward normal of the incident convex hull
+  /// facets. When no Voronoi vertex lies on the opposite side, the farthest
+  /// Voronoi vertex.
+  Point pole(Vertex_handle v) const
+  {
+    const Cell_handle c = v->pole_cell();
+    return this->geom_traits().construct_circumcenter_3_object()(
+      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+  }
+
+  /// The local scale `alpha_p+` of `v`: its distance to `pole(v)`, unless
+  /// scales were supplied. It estimates the local feature size; under radial
+  /// noise above the local sagitta (about spacing^2 / (8R)) it collapses for
+  /// points displaced inwards (see the manual).
+  FT local_scale(Vertex_handle v) const { return v->local_scale(); }
+  /// @}
+
+  /// \name Values
+  /// Conformal values of finite simplices; infinite ones get `+infinity`.
+  /// @{
+  FT conformal_alpha(Vertex_handle v) const
+  { return this->is_infinite(v) ? infinity() : FT(0); }
+
+  FT conformal_alpha(Cell_handle c) const
+  { return this->is_infinite(c) ? infinity() : c->alpha() / min_scale(c); }
+
+  FT conformal_alpha(const Facet& f) const { return conformal_alpha(f.first, f.second); }
+  FT conformal_alpha(Cell_handle c, int i) const
+  { return this->is_infinite(c, i) ? infinity() : c->facet_alpha(i) / min_scale(c, i); }
+
+  FT conformal_alpha(const Edge& e) const { return conformal_alpha(e.first, e.second, e.third); }
+  FT conformal_alpha(Cell_handle c, int i, int j) const
+  { return this->is_infinite(c, i, j) ? infinity() : edge_status(c, i, j).own; }
+
+  /// The ordinary alpha value (a radius) of a finite cell, facet or edge.
+  FT ordinary_alpha(Cell_handle c) const { return c->alpha(); }
+  FT ordinary_alpha(const Facet& f) const { return f.first->facet_alpha(f.second); }
+  FT ordinary_alpha(const Edge& e) const
+  { return edge_ordinary_alpha(e.first, e.first->vertex(e.second), e.first->vertex(e.third)); }
+  /// @}
+
+  /// \name Classification
+  /// @{
+  FT set_alpha(const FT& alpha)
+  {
+    CGAL_precondition(alpha >= 0);
+    FT previous = m_alpha;
+    m_alpha = alpha;
+    return previous;
+  }
+  const FT& get_alpha() const { return m_alpha; }
+
+  Classification_type classify(Cell_handle c) const { return classify(c, m_alpha); }
+  Classification_type classify(Cell_handle c, const FT& alpha) const
+  { return conformal_alpha(c) <= alpha ? INTERIOR : EXTERIOR; }
+
+  Classification_type classify(const Facet& f) const { return classify(f, m_alpha); }
+  Classification_type classify(const Facet& f, const FT& alpha) const
+  { return classify(f.first, f.second, alpha); }
+  Classification_type classify(Cell_handle c, int i) const { return classify(c, i, m_alpha); }
+  Classification_type classify(Cell_handle c, int i, const FT& alpha) const
+  {
+    if(this->is_infinite(c, i))
+      return EXTERIOR;
+    return classify(facet_status(c, i), alpha);
+  }
+
+  Classification_type classify(const Edge& e) const { return classify(e, m_alpha); }
+  Classification_type classify(const Edge& e, const FT& alpha) const
+  { return classify(e.first, e.second, e.third, alpha); }
+  Classification_type classify(Cell_handle c, int i, int j) const
+  { return classify(c, i, j, m_alpha); }
+  Classification_type classify(Cell_handle c, int i, int j, const FT& alpha) const
+  {
+    if(this->is_infinite(c, i, j))
+      return EXTERIOR;
+    return classify(edge_status(c, i, j), alpha);
+  }
+
+  Classification_type classify(Vertex_handle v) const { return classify(v, m_alpha); }
+  Classification_type classify(Vertex_handle v, const FT& alpha) const
+  {
+    if(this->is_infinite(v))
+      return EXTERIOR;
+    return classify(vertex_status(v), alpha);
+  }
+  /// @}
+
+  /// \name The spectrum
+  /// The sorted distinct conformal values of all finite simplices (0 for the
+  /// vertices included). Computed on first use; not thread-safe until then.
+  /// @{
+  Alpha_iterator alpha_begin() const { return spectrum().begin(); }
+  Alpha_iterator alpha_end() const { return spectrum().end(); }
+  size_type number_of_alphas() const { return spectrum().size(); }
+
+  /// The `n`-th value of the spectrum, counting from 1 as `Alpha_shape_3`.
+  const FT& get_nth_alpha(size_type n) const
+  {
+    CGAL_precondition(n > 0 && n <= number_of_alphas());
+    return spectrum()[n - 1];
+  }
+
+  /// First value of the spectrum that is `>= alpha`.
+  Alpha_iterator alpha_lower_bound(const FT& alpha) const
+  { return std::lower_bound(alpha_begin(), alpha_end(), alpha); }
+  /// First value of the spectrum that is `> alpha`.
+  Alpha_iterator alpha_upper_bound(const FT& alpha) const
+  { return std::upper_bound(alpha_begin(), alpha_end(), alpha); }
+
+  /*!
+  The paper's "q of the range of regular facet values": the values of the
+  finite facets that are `REGULAR` or `SINGULAR` for some scale (those whose
+  own value is below the larger value of their two cells, or that lie on the
+  convex hull), sorted increasingly, are read at rank `round(q * (n - 1))`.
+  \pre `0 <= q <= 1` and `dimension() == 3`.
+  */
+  FT alpha_at_quantile(double q) const
+  {
+    CGAL_precondition(q >= 0 && q <= 1 && this->dimension() == 3);
+    std::vector<FT> values;
+    values.reserve(this->number_of_finite_facets());
+    for(const Facet& f : this->finite_facets())
+    {
+      const Critical_values s = facet_status(f.first, f.second);
+      if(s.own < s.max || s.on_hull)
+        values.push_back(s.own);
+    }
+    CGAL_assertion(!values.empty());
+    const auto nth = values.begin() + static_cast<std::ptrdiff_t>(
+                       std::floor(q * double(values.size() - 1) + 0.5));
+    std::nth_element(values.begin(), nth, values.end());
+    return *nth;
+  }
+  /// @}
+
+  /// \name Filtration and simplices
+  /// @{
+
+  /*!
+  Writes every finite simplex once, as `std::pair<Simplex, FT>` (the simplex
+  and its conformal value), in filtration order: by value, then by dimension,
+  so that a face precedes its cofaces.
+  */
+  template <class OutputIterator>
+  OutputIterator filtration_with_alpha_values(OutputIterator out) const
+  {
+    struct Entry { FT value; int dimension; Simplex simplex; };
+    std::vector<Entry> entries;
+    entries.reserve(this->number_of_vertices() + this->number_of_finite_edges()
+                    + this->number_of_finite_facets() + this->number_of_finite_cells());
+    for(Vertex_handle v : this->finite_vertex_handles())
+      entries.push_back(Entry{FT(0), 0, Simplex(v)});
+    for(const Edge& e : this->finite_edges())
+      entries.push_back(Entry{conformal_alpha(e), 1, Simplex(e)});
+    for(const Facet& f : this->finite_facets())
+      entries.push_back(Entry{conformal_alpha(f), 2, Simplex(f)});
+    for(Cell_handle c : this->finite_cell_handles())
+      entries.push_back(Entry{conformal_alpha(c), 3, Simplex(c)});
+    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+      return a.value < b.value || (a.value == b.value && a.dimension < b.dimension);
+    });
+    for(const Entry& e : entries)
+      *out++ = std::make_pair(e.simplex, e.value);
+    return out;
+  }
+
+  /// Writes the finite cells of classification `type` at `alpha`.
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_cells(OutputIterator out, Classification_type type) const
+  { return get_conformal_alpha_shape_cells(out, type, m_alpha); }
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_cells(OutputIterator out, Classification_type type,
+                                                 const FT& alpha) const
+  {
+    for(Cell_handle c : this->finite_cell_handles())
+      if(classify(c, alpha) == type)
+        *out++ = c;
+    return out;
+  }
+
+  /// Writes the finite facets of classification `type` at `alpha`, each once.
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_facets(OutputIterator out, Classification_type type) const
+  { return get_conformal_alpha_shape_facets(out, type, m_alpha); }
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_facets(OutputIterator out, Classification_type type,
+                                                  const FT& alpha) const
+  {
+    for(const Facet& f : this->finite_facets())
+      if(classify(f, alpha) == type)
+        *out++ = f;
+    return out;
+  }
+
+  /// Writes the finite edges of classification `type` at `alpha`, each once.
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_edges(OutputIterator out, Classification_type type) const
+  { return get_conformal_alpha_shape_edges(out, type, m_alpha); }
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_edges(OutputIterator out, Classification_type type,
+                                                 const FT& alpha) const
+  {
+    for(const Edge& e : this->finite_edges())
+      if(classify(e, alpha) == type)
+        *out++ = e;
+    return out;
+  }
+
+  /// Writes the finite vertices of classification `type` at `alpha`.
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_vertices(OutputIterator out, Classification_type type) const
+  { return get_conformal_alpha_shape_vertices(out, type, m_alpha); }
+  template <class OutputIterator>
+  OutputIterator get_conformal_alpha_shape_vertices(OutputIterator out, Classification_type type,
+                                                    const FT& alpha) const
+  {
+    for(Vertex_handle v : this->finite_vertex_handles())
+      if(classify(v, alpha) == type)
+        *out++ = v;
+    return out;
+  }
+
+  /// The number of connected components of the `INTERIOR` cells at `alpha`,
+  /// two cells being connected when they share a facet.
+  size_type number_of_solid_components() const { return number_of_solid_components(m_alpha); }
+  size_type number_of_solid_components(const FT& alpha) const
+  {
+    std::vector<bool> seen(this->number_of_cells(), false);
+    std::vector<Cell_handle> stack;
+    size_type components = 0;
+    for(Cell_handle c : this->finite_cell_handles())
+    {
+      if(seen[c->cell_index()] || classify(c, alpha) != INTERIOR)
+        continue;
+      ++components;
+      seen[c->cell_index()] = true;
+      stack.push_back(c);
+      while(!stack.empty())
+      {
+        const Cell_handle d = stack.back();
+        stack.pop_back();
+        for(int i = 0; i < 4; ++i)
+        {
+          const Cell_handle n = d->neighbor(i);
+          if(!seen[n->cell_index()] && classify(n, alpha) == INTERIOR)
+          {
+            seen[n->cell_index()] = true;
+            stack.push_back(n);
+          }
+        }
+      }
+    }
+    return components;
+  }
+  /// @}
+
+private:
+  typedef Conformal_alpha_shapes_3::internal::Pole<Cell_handle> Pole;
+
+  // The three values at which a simplex changes class, as in Alpha_shape_3:
+  // it enters the complex at `own`, gets a coface in it at `mid`, and all its
+  // cells are in it at `max` (never, when it lies on the convex hull).
+  struct Critical_values
+  {
+    FT own, mid, max;
+    bool on_hull;
+  };
+
+  static FT infinity() { return std::numeric_limits<FT>::infinity(); }
+
+  Classification_type classify(const Critical_values& s, const FT& alpha) const
+  {
+    if(!s.on_hull && alpha >= s.max) return INTERIOR;
+    if(alpha >= s.mid)               return REGULAR;
+    if(alpha >= s.own)               return SINGULAR;
+    return EXTERIOR;
+  }
+
+  FT min_scale(Cell_handle c) const
+  {
+    return (std::min)((std::min)(c->vertex(0)->local_scale(), c->vertex(1)->local_scale()),
+                      (std::min)(c->vertex(2)->local_scale(), c->vertex(3)->local_scale()));
+  }
+  FT min_scale(Cell_handle c, int i) const
+  {
+    return (std::min)({c->vertex((i + 1) & 3)->local_scale(), c->vertex((i + 2) & 3)->local_scale(),
+                       c->vertex((i + 3) & 3)->local_scale()});
+  }
+
+  Critical_values facet_status(Cell_handle c, int i) const
+  {
+    const Cell_handle n = c->neighbor(i);
+    const FT a = conformal_alpha(c), b = conformal_alpha(n);
+    return Critical_values{conformal_alpha(c, i), (std::min)(a, b), (std::max)(a, b),
+                           this->is_infinite(c) || this->is_infinite(n)};
+  }
+
+  // An edge is Gabriel when no vertex of an incident cell lies strictly
+  // inside its diametral ball; otherwise it is attached to its smallest
+  // incident facet.
+  FT edge_ordinary_alpha(Cell_handle c, Vertex_handle p, Vertex_handle q) const
+  {
+    typename Gt::Side_of_bounded_sphere_3 side = this->geom_traits().side_of_bounded_sphere_3_object();
+    bool gabriel = true;
+    FT smallest_facet = infinity();
+    typename Dt::Cell_circulator cc = this->incident_cells(c, c->index(p), c->index(q)), done = cc;
+    do
+    {
+      const int i = cc->index(p), j = cc->index(q);
+      for(int k = 0; k < 4; ++k)
+      {
+        if(k == i || k == j)
+          continue;
+        const Vertex_handle s = cc->vertex(k);
+        if(this->is_infinite(s))
+          continue;
+        if(gabriel && side(p->point(), q->point(), s->point()) == ON_BOUNDED_SIDE)
+          gabriel = false;
+        // the facet opposite to the other vertex holds p, q and s
+        smallest_facet = (std::min)(smallest_facet, cc->facet_alpha(6 - i - j - k));
+      }
+    } while(++cc != done);
+    if(gabriel)
+      return std::sqrt(this->geom_traits().compute_squared_radius_3_object()(p->point(), q->point()));
+    return smallest_facet;
+  }
+
+  Critical_values edge_status(Cell_handle c, int i, int j) const
+  {
+    const Vertex_handle p = c->vertex(i), q = c->vertex(j);
+    Critical_values s{edge_ordinary_alpha(c, p, q) / (std::min)(p->local_scale(), q->local_scale()),
+                      infinity(), FT(0), false};
+    typename Dt::Cell_circulator cc = this->incident_cells(c, i, j), done = cc;
+    do
+    {
+      if(this->is_infinite(cc))
+      {
+        s.on_hull = true;
+      }
+      else
+      {
+        s.max = (std::max)(s.max, conformal_alpha(Cell_handle(cc)));
+        for(int k = 0; k < 4; ++k)
+          if(cc->vertex(k) != p && cc->vertex(k) != q)
+            s.mid = (std::min)(s.mid, conformal_alpha(Cell_handle(cc), k));
+      }
+    } while(++cc != done);
+    return s;
+  }
+
+  Critical_values vertex_status(Vertex_handle v) const
+  {
+    Critical_values s{FT(0), infinity(), FT(0), false};
+    std::vector<Cell_handle> cells;
+    this->incident_cells(v, std::back_inserter(cells));
+    for(Cell_handle c : cells)
+    {
+      if(this->is_infinite(c))
+      {
+        s.on_hull = true;
+        continue;
+      }
+      s.max = (std::max)(s.max, conformal_alpha(c));
+    }
+    std::vector<Edge> edges;
+    this->finite_incident_edges(v, std::back_inserter(edges));
+    for(const Edge& e : edges)
+      s.mid = (std::min)(s.mid, conformal_alpha(e));
+    return s;
+  }
+
+  const std::vector<FT>& spectrum() const
+  {
+    if(m_spectrum_ready)
+      return m_spectrum;
+    m_spectrum.clear();
+    if(this->number_of_vertices() > 0)
+      m_spectrum.push_back(FT(0));
+    for(const Edge& e : this->finite_edges())
+      m_spectrum.push_back(conformal_alpha(e));
+    for(const Facet& f : this->finite_facets())
+      m_spectrum.push_back(conformal_alpha(f));
+    for(Cell_handle c : this->finite_cell_handles())
+      m_spectrum.push_back(conformal_alpha(c));
+    std::sort(m_spectrum.begin(), m_spectrum.end());
+    m_spectrum.erase(std::unique(m_spectrum.begin(), m_spectrum.end()), m_spectrum.end());
+    m_spectrum.shrink_to_fit();
+    m_spectrum_ready = true;
+    return m_spectrum;
+  }
+
+  // Inserts the points in spatial order, remembering which vertex stands for
+  // which input point, then stores the ordinary alpha values.
+  template <class InputIterator>
+  void insert_points(InputIterator first, InputIterator last)
+  {
+    clear();
+    const std::vector<Point> points(first, last);
+    for(size_type i = 0; i < points.size(); ++i)
+      for(int d = 0; d < 3; ++d)
+        if(!std::isfinite(CGAL::to_double(points[i][d])))
+          throw std::invalid_argument("Conformal_alpha_shape_3: input point " + std::to_string(i)
+                                      + " has a coordinate that is NaN or infinite");
+
+    std::vector<size_type> order(points.size());
+    std::iota(order.begin(), order.end(), size_type(0));
+    typedef typename CGAL::Pointer_property_map<Point>::const_type Point_map;
+    CGAL::spatial_sort(order.begin(), order.end(),
+                       Spatial_sort_traits_adapter_3<Gt, Point_map>(
+                         CGAL::make_property_map(points)));
+
+    m_input_vertices.assign(points.size(), Vertex_handle());
+    Vertex_handle hint;
+    for(size_type i : order)
+    {
+      const size_type before = this->number_of_vertices();
+      hint = Dt::insert(points[i], hint);
+      if(this->number_of_vertices() > before)
+        hint->set_vertex_index(before);
+      m_input_vertices[i] = hint;
+    }
+
+    if(this->dimension() < 3)
+    {
+      const std::string why = "Conformal_alpha_shape_3: the " + std::to_string(points.size())
+        + " input points (" + std::to_string(this->number_of_vertices())
+        + " distinct) span dimension " + std::to_string(this->dimension())
+        + "; a conformal alpha shape needs 4 points that are not coplanar";
+      clear();
+      throw std::invalid_argument(why);
+    }
+
+    // input indices of each vertex, as compressed rows
+    m_input_offsets.assign(this->number_of_vertices() + 1, 0);
+    for(Vertex_handle v : m_input_vertices)
+      ++m_input_offsets[v->vertex_index() + 1];
+    std::partial_sum(m_input_offsets.begin(), m_input_offsets.end(), m_input_offsets.begin());
+    m_input_indices.resize(points.size());
+    std::vector<size_type> fill(m_input_offsets.begin(), m_input_offsets.end() - 1);
+    for(size_type i = 0; i < points.size(); ++i)
+      m_input_indices[fill[m_input_vertices[i]->vertex_index()]++] = i;
+
+    store_ordinary_alphas();
+  }
+
+  void store_ordinary_alphas()
+  {
+    size_type index = 0;
+    for(Cell_handle c : this->all_cell_handles())
+      c->set_cell_index(index++);
+
+    const Gt& gt = this->geom_traits();
+    typename Gt::Compute_squared_radius_3 squared_radius = gt.compute_squared_radius_3_object();
+    typename Gt::Side_of_bounded_sphere_3 side = gt.side_of_bounded_sphere_3_object();
+    for(Cell_handle c : this->all_cell_handles())
+      c->set_alpha(this->is_infinite(c)
+                   ? infinity()
+                   : std::sqrt(squared_radius(c->vertex(0)->point(), c->vertex(1)->point(),
+                                              c->vertex(2)->point(), c->vertex(3)->point())));
+
+    // A facet is Gabriel when neither opposite vertex lies strictly inside its
+    // smallest circumscribing ball; otherwise it is attached to its smaller cell.
+    for(const Facet& f : this->finite_facets())
+    {
+      const Cell_handle c = f.first, n = c->neighbor(f.second);
+      const int j = n->index(c);
+      const Point& p = c->vertex((f.second + 1) & 3)->point();
+      const Point& q = c->vertex((f.second + 2) & 3)->point();
+      const Point& r = c->vertex((f.second + 3) & 3)->point();
+      const bool gabriel =
+        (this->is_infinite(c) || side(p, q, r, c->vertex(f.second)->point()) != ON_BOUNDED_SIDE) &&
+        (this->is_infinite(n) || side(p, q, r, n->vertex(j)->point()) != ON_BOUNDED_SIDE);
+      const FT value = gabriel ? std::sqrt(squared_radius(p, q, r)) : (std::min)(c->alpha(), n->alpha());
+      c->set_facet_alpha(f.second, value);
+      n->set_facet_alpha(j, value);
+    }
+  }
+
+  FT m_alpha;
+  std::vector<Vertex_handle> m_input_vertices;  // input index -> vertex
+  std::vector<size_type> m_input_offsets;       // vertex index -> rows of m_input_indices
+  std::vector<size_type> m_input_indices;
+  mutable std::vector<FT> m_spectrum;
+  mutable bool m_spectrum_ready = false;
+};
+
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPE_3_H

@@ -1,0 +1,359 @@
+// Tests of the filtration: the Alpha_shape_3 oracle, poles, filtration order,
+// spectrum and quantiles, and bad input.
+#define BOOST_TEST_MODULE test_conformal_alpha_shape_3
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Conformal_alpha_shape_3.h>
+
+#include <CGAL/Alpha_shape_3.h>
+#include <CGAL/Alpha_shape_cell_base_3.h>
+#include <CGAL/Alpha_shape_vertex_base_3.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include "cas3_test_shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+
+typedef CGAL::Triangulation_data_structure_3<CGAL::Conformal_alpha_shape_vertex_base_3<K>,
+                                             CGAL::Conformal_alpha_shape_cell_base_3<K> > Tds;
+typedef CGAL::Delaunay_triangulation_3<K, Tds> Dt;
+typedef CGAL::Conformal_alpha_shape_3<Dt> Cas;
+
+typedef CGAL::Triangulation_data_structure_3<CGAL::Alpha_shape_vertex_base_3<K>,
+                                             CGAL::Alpha_shape_cell_base_3<K> > Oracle_tds;
+typedef CGAL::Alpha_shape_3<CGAL::Delaunay_triangulation_3<K, Oracle_tds> > Oracle;
+
+namespace {
+
+// A simplex is identified by its sorted vertex points, so that simplices of
+// two triangulations of the same points can be matched.
+template <class Vertex_handle, std::size_t N>
+std::vector<Point> key(const std::array<Vertex_handle, N>& vs)
+{
+  std::vector<Point> k;
+  for(const auto& v : vs) k.push_back(v->point());
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+template <class Shape>
+std::array<typename Shape::Vertex_handle, 3> facet_vertices(const typename Shape::Facet& f)
+{
+  return {f.first->vertex((f.second + 1) & 3), f.first->vertex((f.second + 2) & 3),
+          f.first->vertex((f.second + 3) & 3)};
+}
+
+// Classification names of every finite simplex, keyed by its points.
+template <class Shape, class Alpha>
+std::map<std::vector<Point>, int> classification(const Shape& s, const Alpha& alpha)
+{
+  std::map<std::vector<Point>, int> m;
+  for(auto v : s.finite_vertex_handles())
+    m[key(std::array<typename Shape::Vertex_handle, 1>{v})] = int(s.classify(v, alpha));
+  for(const auto& e : s.finite_edges())
+    m[key(std::array<typename Shape::Vertex_handle, 2>{e.first->vertex(e.second),
+                                                       e.first->vertex(e.third)})] =
+      int(s.classify(e, alpha)) + 10;
+  for(const auto& f : s.finite_facets())
+    m[key(facet_vertices<Shape>(f))] = int(s.classify(f, alpha)) + 20;
+  for(auto c : s.finite_cell_handles())
+    m[key(std::array<typename Shape::Vertex_handle, 4>{c->vertex(0), c->vertex(1), c->vertex(2),
+                                                       c->vertex(3)})] = int(s.classify(c, alpha)) + 30;
+  return m;
+}
+
+void check_against_oracle(const std::vector<Point>& pts, const std::string& name)
+{
+  const std::vector<double> ones(pts.size(), 1.0);
+  const Cas cas(pts.begin(), pts.end(), ones.begin());
+  const Oracle oracle(pts.begin(), pts.end(), 0, Oracle::GENERAL);
+  BOOST_REQUIRE_EQUAL(cas.number_of_finite_cells(), oracle.number_of_finite_cells());
+
+  // the enum values are declared in the same order in both classes
+  BOOST_REQUIRE_EQUAL(int(Cas::EXTERIOR), int(Oracle::EXTERIOR));
+  BOOST_REQUIRE_EQUAL(int(Cas::SINGULAR), int(Oracle::SINGULAR));
+  BOOST_REQUIRE_EQUAL(int(Cas::REGULAR), int(Oracle::REGULAR));
+  BOOST_REQUIRE_EQUAL(int(Cas::INTERIOR), int(Oracle::INTERIOR));
+
+  // scales between consecutive spectrum values, across the whole spectrum
+  const std::size_t n = oracle.number_of_alphas();
+  for(double q : {0.001, 0.01, 0.05, 0.1, 0.2, 0.35, 0.5, 0.75, 0.95})
+  {
+    const std::size_t k = std::max<std::size_t>(1, std::size_t(q * double(n)));
+    const double alpha2 = 0.5 * (oracle.get_nth_alpha(int(k)) + oracle.get_nth_alpha(int(k + 1)));
+    const auto expected = classification(oracle, alpha2);
+    const auto got = classification(cas, std::sqrt(alpha2));
+    BOOST_REQUIRE_EQUAL(got.size(), expected.size());
+    std::size_t mismatches = 0;
+    for(const auto& kv : expected)
+    {
+      auto it = got.find(kv.first);
+      if(it == got.end() || it->second != kv.second) ++mismatches;
+    }
+    BOOST_TEST_INFO(name << " at quantile " << q);
+    BOOST_TEST(mismatches == 0u);
+    BOOST_TEST(cas.number_of_solid_components(std::sqrt(alpha2)) ==
+               oracle.number_of_solid_components(alpha2));
+  }
+}
+
+double angle_degrees(const Vector& a, const Vector& b)
+{
+  const double c = (a * b) / std::sqrt(a.squared_length() * b.squared_length());
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / M_PI;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(oracle_random_volume)
+{
+  check_against_oracle(cas3_test::cube_volume_sample<Point>(1500), "random volume");
+}
+
+BOOST_AUTO_TEST_CASE(oracle_noisy_ellipsoid)
+{
+  check_against_oracle(cas3_test::ellipsoid_sample<Point>(2000, 1.0, 0.7, 0.4, 0.01), "noisy ellipsoid");
+}
+
+BOOST_AUTO_TEST_CASE(oracle_noisy_torus)
+{
+  check_against_oracle(cas3_test::torus_sample<Point>(2000, 1.0, 0.3, 0.01), "noisy torus");
+}
+
+BOOST_AUTO_TEST_CASE(poles_on_a_sphere)
+{
+  const double r = 2.5;
+  const auto pts = cas3_test::ellipsoid_sample<Point>(4000, r, r, r, 0.0, 7, 1e-6 * r);
+  const Cas cas(pts.begin(), pts.end());
+  std::size_t checked = 0;
+  for(auto v : cas.finite_vertex_handles())
+  {
+    const Vector normal = v->point() - CGAL::ORIGIN;
+    BOOST_TEST(cas.local_scale(v) == r, boost::test_tools::tolerance(0.05));
+    // the pole of a sphere sample is near the centre, so p - pole is the normal
+    BOOST_TEST(angle_degrees(v->point() - cas.pole(v), normal) < 3.0);
+    BOOST_TEST(std::abs(std::sqrt(CGAL::squared_distance(v->point(), cas.pole(v))) - cas.local_scale(v))
+               < 1e-9 * r);
+    ++checked;
+  }
+  BOOST_TEST(checked == pts.size());
+}
+
+BOOST_AUTO_TEST_CASE(poles_follow_the_normal_on_an_ellipsoid)
+{
+  const double a = 1.0, b = 0.8, c = 0.5;
+  const auto pts = cas3_test::ellipsoid_sample<Point>(6000, a, b, c);
+  const Cas cas(pts.begin(), pts.end());
+  std::vector<double> angles;
+  for(auto v : cas.finite_vertex_handles())
+  {
+    const Point& p = v->point();
+    const Vector normal(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c));
+    angles.push_back(angle_degrees(p - cas.pole(v), normal));
+    // the inner pole lies on the medial axis, no farther than the largest
+    // radius of curvature a^2/c and no closer than the smallest c^2/a
+    BOOST_TEST(cas.local_scale(v) <= a * a / c * 1.05);
+    BOOST_TEST(cas.local_scale(v) >= c * c / a * 0.9);
+  }
+  std::sort(angles.begin(), angles.end());
+  BOOST_TEST(angles[angles.size() / 2] < 2.0);
+  BOOST_TEST(angles.back() < 10.0);
+}
+
+BOOST_AUTO_TEST_CASE(filtration_order_and_monotone_values)
+{
+  const auto pts = cas3_test::torus_sample<Point>(1500, 1.0, 0.35, 0.002);
+  const Cas cas(pts.begin(), pts.end());
+
+  // a face's value never exceeds a coface's
+  for(auto c : cas.finite_cell_handles())
+    for(int i = 0; i < 4; ++i)
+    {
+      BOOST_TEST(cas.conformal_alpha(c, i) <= cas.conformal_alpha(c));
+      for(int j = 0; j < 4; ++j)
+        for(int k = j + 1; k < 4; ++k)
+          if(j != i && k != i)
+            BOOST_TEST(cas.conformal_alpha(c, j, k) <= cas.conformal_alpha(c, i));
+    }
+
+  typedef std::pair<Cas::Simplex, double> Entry;
+  std::vector<Entry> filtration;
+  cas.filtration_with_alpha_values(std::back_inserter(filtration));
+  const std::size_t expected = cas.number_of_vertices() + cas.number_of_finite_edges() +
+                               cas.number_of_finite_facets() + cas.number_of_finite_cells();
+  BOOST_TEST(filtration.size() == expected);
+  std::map<Cas::Simplex, std::size_t> position;
+  for(std::size_t i = 0; i < filtration.size(); ++i)
+  {
+    BOOST_TEST(position.emplace(filtration[i].first, i).second);  // listed once
+    if(i > 0) BOOST_TEST(filtration[i - 1].second <= filtration[i].second);
+  }
+  for(auto c : cas.finite_cell_handles())
+    for(int i = 0; i < 4; ++i)
+    {
+      const std::size_t facet = position.at(Cas::Simplex(Cas::Facet(c, i)));
+      BOOST_TEST(facet < position.at(Cas::Simplex(c)));
+      for(int j = 0; j < 4; ++j)
+        for(int k = j + 1; k < 4; ++k)
+          if(j != i && k != i)
+            BOOST_TEST(position.at(Cas::Simplex(Cas::Edge(c, j, k))) < facet);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(spectrum_and_quantiles)
+{
+  const auto pts = cas3_test::ellipsoid_sample<Point>(3000, 1.0, 0.6, 0.4, 0.001);
+  Cas cas(pts.begin(), pts.end());
+  BOOST_TEST(cas.number_of_alphas() > 0u);
+  BOOST_TEST(cas.get_nth_alpha(1) == 0.0);
+  BOOST_TEST(std::is_sorted(cas.alpha_begin(), cas.alpha_end()));
+  BOOST_TEST(bool(std::adjacent_find(cas.alpha_begin(), cas.alpha_end()) == cas.alpha_end()));
+
+  double previous = -1;
+  for(double q : {0.0, 0.1, 0.25, 0.35, 0.5, 0.9, 1.0})
+  {
+    const double a = cas.alpha_at_quantile(q);
+    BOOST_TEST(a >= previous);
+    BOOST_TEST(std::binary_search(cas.alpha_begin(), cas.alpha_end(), a));
+    previous = a;
+  }
+
+  // the surface appears as singular and regular facets, and grows with a
+  cas.set_alpha(cas.alpha_at_quantile(0.25));
+  std::vector<Cas::Facet> singular, regular;
+  cas.get_conformal_alpha_shape_facets(std::back_inserter(singular), Cas::SINGULAR);
+  cas.get_conformal_alpha_shape_facets(std::back_inserter(regular), Cas::REGULAR);
+  BOOST_TEST(singular.size() + regular.size() > pts.size());
+  std::vector<Cas::Cell_handle> interior_small, interior_large;
+  cas.get_conformal_alpha_shape_cells(std::back_inserter(interior_small), Cas::INTERIOR,
+                                      cas.alpha_at_quantile(0.1));
+  cas.get_conformal_alpha_shape_cells(std::back_inserter(interior_large), Cas::INTERIOR,
+                                      cas.alpha_at_quantile(0.5));
+  BOOST_TEST(interior_small.size() <= interior_large.size());
+  std::vector<Cas::Vertex_handle> vertices;
+  cas.get_conformal_alpha_shape_vertices(std::back_inserter(vertices), Cas::EXTERIOR);
+  BOOST_TEST(vertices.empty());  // every vertex is in every complex
+}
+
+BOOST_AUTO_TEST_CASE(duplicates_collapse_and_remember_their_indices)
+{
+  std::vector<Point> pts = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1),
+                            Point(1, 0, 0), Point(1, 1, 1), Point(0, 0, 0), Point(1, 0, 0)};
+  const Cas cas(pts.begin(), pts.end());
+  BOOST_TEST(cas.number_of_vertices() == 5u);
+  BOOST_TEST(cas.number_of_input_points() == pts.size());
+  const auto v = cas.input_vertex(1);
+  const auto idx = cas.input_indices(v);
+  BOOST_TEST(std::vector<std::size_t>(idx.begin(), idx.end()) == std::vector<std::size_t>({1, 4, 7}),
+             boost::test_tools::per_element());
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    BOOST_TEST(cas.input_vertex(i)->point() == pts[i]);
+  for(auto w : cas.finite_vertex_handles())
+    BOOST_TEST(cas.local_scale(w) > 0);
+}
+
+BOOST_AUTO_TEST_CASE(input_that_does_not_span_3d_is_rejected)
+{
+  auto rejects = [](const std::vector<Point>& pts) {
+    try { Cas cas(pts.begin(), pts.end()); }
+    catch(const std::invalid_argument& e) { return std::string(e.what()).find("span dimension") != std::string::npos; }
+    return false;
+  };
+  BOOST_TEST(rejects({}));
+  BOOST_TEST(rejects({Point(0, 0, 0)}));
+  BOOST_TEST(rejects({Point(0, 0, 0), Point(1, 0, 0)}));
+  BOOST_TEST(rejects({Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)}));
+  BOOST_TEST(rejects({Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0), Point(2, 3, 0)}));
+  BOOST_TEST(rejects({Point(0, 0, 0), Point(1, 1, 1), Point(2, 2, 2), Point(3, 3, 3)}));
+  BOOST_TEST(rejects({Point(0, 0, 0), Point(0, 0, 0), Point(0, 0, 0), Point(0, 0, 0), Point(0, 0, 0)}));
+  // the smallest valid input: one tetrahedron
+  const std::vector<Point> tet = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+  Cas cas(tet.begin(), tet.end());
+  BOOST_TEST(cas.number_of_finite_cells() == 1u);
+  BOOST_TEST(cas.classify(Cas::Cell_handle(*cas.finite_cell_handles().begin())->neighbor(0), 1e300) == Cas::EXTERIOR);
+  // a failed rebuild leaves an empty shape behind
+  const std::vector<Point> flat = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0)};
+  BOOST_CHECK_THROW(cas.make_conformal_alpha_shape(flat.begin(), flat.end()), std::invalid_argument);
+  BOOST_TEST(cas.number_of_vertices() == 0u);
+  BOOST_TEST(cas.number_of_input_points() == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(non_finite_coordinates_and_scales_are_rejected_by_index)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<Point> pts = cas3_test::cube_volume_sample<Point>(20);
+  auto message = [](const std::vector<Point>& p) {
+    try { Cas cas(p.begin(), p.end()); }
+    catch(const std::invalid_argument& e) { return std::string(e.what()); }
+    return std::string();
+  };
+  pts[13] = Point(0.5, nan, 0.1);
+  BOOST_TEST(message(pts).find("input point 13 ") != std::string::npos);
+  pts[13] = Point(0.5, 0.2, 0.1);
+  pts[4] = Point(-inf, 0, 0);
+  BOOST_TEST(message(pts).find("input point 4 ") != std::string::npos);
+  pts[4] = Point(0.1, 0.2, 0.3);
+  BOOST_TEST(message(pts).empty());
+
+  std::vector<double> scales(pts.size(), 1.0);
+  scales[7] = 0.0;
+  BOOST_CHECK_THROW(Cas(pts.begin(), pts.end(), scales.begin()), std::invalid_argument);
+  scales[7] = nan;
+  BOOST_CHECK_THROW(Cas(pts.begin(), pts.end(), scales.begin()), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(exactly_cospherical_points_give_a_valid_filtration)
+{
+  // every integer point on the sphere x^2 + y^2 + z^2 = 50: all cells share
+  // one circumsphere, a fully degenerate Delaunay triangulation
+  std::vector<Point> pts;
+  for(int x = -7; x <= 7; ++x)
+    for(int y = -7; y <= 7; ++y)
+      for(int z = -7; z <= 7; ++z)
+        if(x * x + y * y + z * z == 50) pts.push_back(Point(x, y, z));
+  BOOST_REQUIRE(pts.size() > 20u);
+  const Cas cas(pts.begin(), pts.end());
+  BOOST_TEST(cas.is_valid());
+  for(auto v : cas.finite_vertex_handles())
+    BOOST_TEST(cas.local_scale(v) == std::sqrt(50.0), boost::test_tools::tolerance(1e-9));
+  for(auto c : cas.finite_cell_handles())
+  {
+    BOOST_TEST(cas.conformal_alpha(c) == 1.0, boost::test_tools::tolerance(1e-9));
+    for(int i = 0; i < 4; ++i)
+      BOOST_TEST(cas.conformal_alpha(c, i) <= cas.conformal_alpha(c));
+  }
+  std::vector<std::pair<Cas::Simplex, double> > filtration;
+  cas.filtration_with_alpha_values(std::back_inserter(filtration));
+  for(std::size_t i = 1; i < filtration.size(); ++i)
+    BOOST_TEST(filtration[i - 1].second <= filtration[i].second);
+  BOOST_TEST(cas.number_of_solid_components(1.0) == 1u);
+  BOOST_TEST(cas.number_of_solid_components(0.999) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(bundled_bunny_builds)
+{
+  std::ifstream in(CAS3_BUNNY_XYZ);
+  BOOST_REQUIRE(in);
+  std::size_t n = 0;
+  in >> n;
+  std::vector<Point> pts;
+  double x, y, z;
+  while(in >> x >> y >> z) pts.push_back(Point(x, y, z));
+  BOOST_REQUIRE_EQUAL(pts.size(), n);
+  const Cas cas(pts.begin(), pts.end());
+  BOOST_TEST(cas.number_of_input_points() == n);
+  BOOST_TEST(cas.alpha_at_quantile(0.1) < cas.alpha_at_quantile(0.5));
+}
