@@ -52,9 +52,10 @@ when it is in the complex but is a face of no higher-dimensional simplex of the
 complex. For a facet, `REGULAR` means exactly one of its two cells is in the
 complex; a surface sample's surface first appears as `SINGULAR` facets.
 
-Values are kept in the triangulation's own vertices and cells (five doubles
-per cell: the ordinary alpha of the cell and of its facets); edge values are
-computed when asked for. The sorted spectrum is computed on first use.
+Values are kept in the triangulation's own vertices and cells: each cell keeps
+its radius and which of its facets are Gabriel (16 bytes per cell), each vertex
+its local scale and pole. Facet and edge values follow from these when asked
+for. The sorted spectrum is computed on first use.
 
 The triangulation must not be modified after construction: its values would
 no longer be valid. Use `make_conformal_alpha_shape()` to rebuild.
@@ -135,7 +136,8 @@ public:
   size_type make_conformal_alpha_shape(InputIterator first, InputIterator last)
   {
     insert_points(first, last);
-    const std::vector<Pole> poles = Conformal_alpha_shapes_3::internal::compute_poles(*this);
+    const std::vector<Pole> poles =
+      Conformal_alpha_shapes_3::internal::compute_poles(*this, store_cell_values());
     for(Vertex_handle v : this->finite_vertex_handles())
     {
       v->set_pole_cell(poles[v->vertex_index()].cell);
@@ -235,7 +237,7 @@ public:
 
   FT conformal_alpha(const Facet& f) const { return conformal_alpha(f.first, f.second); }
   FT conformal_alpha(Cell_handle c, int i) const
-  { return this->is_infinite(c, i) ? infinity() : c->facet_alpha(i) / min_scale(c, i); }
+  { return this->is_infinite(c, i) ? infinity() : ordinary_alpha(c, i) / min_scale(c, i); }
 
   FT conformal_alpha(const Edge& e) const { return conformal_alpha(e.first, e.second, e.third); }
   FT conformal_alpha(Cell_handle c, int i, int j) const
@@ -243,7 +245,15 @@ public:
 
   /// The ordinary alpha value (a radius) of a finite cell, facet or edge.
   FT ordinary_alpha(Cell_handle c) const { return c->alpha(); }
-  FT ordinary_alpha(const Facet& f) const { return f.first->facet_alpha(f.second); }
+  FT ordinary_alpha(const Facet& f) const { return ordinary_alpha(f.first, f.second); }
+  FT ordinary_alpha(Cell_handle c, int i) const
+  {
+    const Cell_handle n = c->neighbor(i);
+    if(c->encroaches_facet(i) || n->encroaches_facet(n->index(c)))
+      return (std::min)(c->alpha(), n->alpha());
+    return std::sqrt(this->geom_traits().compute_squared_radius_3_object()(
+      c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(), c->vertex((i + 3) & 3)->point()));
+  }
   FT ordinary_alpha(const Edge& e) const
   { return edge_ordinary_alpha(e.first, e.first->vertex(e.second), e.first->vertex(e.third)); }
   /// @}
@@ -527,7 +537,7 @@ private:
         if(gabriel && side(p->point(), q->point(), s->point()) == ON_BOUNDED_SIDE)
           gabriel = false;
         // the facet opposite to the other vertex holds p, q and s
-        smallest_facet = (std::min)(smallest_facet, cc->facet_alpha(6 - i - j - k));
+        smallest_facet = (std::min)(smallest_facet, ordinary_alpha(Cell_handle(cc), 6 - i - j - k));
       }
     } while(++cc != done);
     if(gabriel)
@@ -600,7 +610,7 @@ private:
   }
 
   // Inserts the points in spatial order, remembering which vertex stands for
-  // which input point, then stores the ordinary alpha values.
+  // which input point.
   template <class InputIterator>
   void insert_points(InputIterator first, InputIterator last)
   {
@@ -649,41 +659,50 @@ private:
     std::vector<size_type> fill(m_input_offsets.begin(), m_input_offsets.end() - 1);
     for(size_type i = 0; i < points.size(); ++i)
       m_input_indices[fill[m_input_vertices[i]->vertex_index()]++] = i;
-
-    store_ordinary_alphas();
   }
 
-  void store_ordinary_alphas()
+  // One pass over the cells stores each cell's radius and which of its facets
+  // its vertices encroach, and returns the circumcentres (indexed by cell
+  // index) for the poles. The vertex opposite to a facet lies strictly inside
+  // the facet's smallest circumscribing ball exactly when the cell's
+  // circumcentre lies strictly beyond the facet's plane: the centres of the
+  // balls through the facet's circle lie on one line, and the opposite
+  // vertex's power changes sign with the centre's side. This is a filtered
+  // orientation test, much cheaper than Side_of_bounded_sphere_3.
+  std::vector<Point> store_cell_values()
   {
+    const Gt& gt = this->geom_traits();
+    typename Gt::Construct_circumcenter_3 circumcenter = gt.construct_circumcenter_3_object();
+    typename Gt::Compute_squared_distance_3 squared_distance = gt.compute_squared_distance_3_object();
+    typename Gt::Orientation_3 orientation = gt.orientation_3_object();
+
+    std::vector<Point> centers(this->number_of_cells());
     size_type index = 0;
     for(Cell_handle c : this->all_cell_handles())
-      c->set_cell_index(index++);
-
-    const Gt& gt = this->geom_traits();
-    typename Gt::Compute_squared_radius_3 squared_radius = gt.compute_squared_radius_3_object();
-    typename Gt::Side_of_bounded_sphere_3 side = gt.side_of_bounded_sphere_3_object();
-    for(Cell_handle c : this->all_cell_handles())
-      c->set_alpha(this->is_infinite(c)
-                   ? infinity()
-                   : std::sqrt(squared_radius(c->vertex(0)->point(), c->vertex(1)->point(),
-                                              c->vertex(2)->point(), c->vertex(3)->point())));
-
-    // A facet is Gabriel when neither opposite vertex lies strictly inside its
-    // smallest circumscribing ball; otherwise it is attached to its smaller cell.
-    for(const Facet& f : this->finite_facets())
     {
-      const Cell_handle c = f.first, n = c->neighbor(f.second);
-      const int j = n->index(c);
-      const Point& p = c->vertex((f.second + 1) & 3)->point();
-      const Point& q = c->vertex((f.second + 2) & 3)->point();
-      const Point& r = c->vertex((f.second + 3) & 3)->point();
-      const bool gabriel =
-        (this->is_infinite(c) || side(p, q, r, c->vertex(f.second)->point()) != ON_BOUNDED_SIDE) &&
-        (this->is_infinite(n) || side(p, q, r, n->vertex(j)->point()) != ON_BOUNDED_SIDE);
-      const FT value = gabriel ? std::sqrt(squared_radius(p, q, r)) : (std::min)(c->alpha(), n->alpha());
-      c->set_facet_alpha(f.second, value);
-      n->set_facet_alpha(j, value);
+      c->set_cell_index(index++);
+      if(this->is_infinite(c))
+      {
+        c->set_alpha(infinity());
+        for(int i = 0; i < 4; ++i)
+          c->set_encroaches_facet(i, false);
+        continue;
+      }
+      const Point& center = centers[c->cell_index()] =
+        circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
+                     c->vertex(2)->point(), c->vertex(3)->point());
+      c->set_alpha(std::sqrt(squared_distance(center, c->vertex(0)->point())));
+      for(int i = 0; i < 4; ++i)
+      {
+        // (v[i+1], v[i+2], v[i+3], v[i]) is a cyclic shift of a positive cell
+        const Orientation vertex_side = (i % 2 == 0) ? NEGATIVE : POSITIVE;
+        const Orientation center_side = orientation(c->vertex((i + 1) & 3)->point(),
+                                                    c->vertex((i + 2) & 3)->point(),
+                                                    c->vertex((i + 3) & 3)->point(), center);
+        c->set_encroaches_facet(i, center_side == -vertex_side);
+      }
     }
+    return centers;
   }
 
   FT m_alpha;

@@ -7,8 +7,8 @@
 #include <CGAL/Default.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 
-#include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace CGAL {
 
@@ -16,11 +16,10 @@ namespace CGAL {
 \ingroup PkgConformalAlphaShapes3Classes
 
 The cell base of the triangulation underlying `Conformal_alpha_shape_3`.
-It stores the ordinary alpha value (a radius, not squared) of the cell and of
-its four facets, and a dense cell index used to address per-cell arrays.
-A facet's value is stored in both cells that share it. Conformal values are
-derived from these and the vertices' local scales, so the storage is five
-doubles and one index per cell.
+It stores the ordinary alpha value (a radius, not squared) of the cell, which
+of its facets are encroached by their opposite vertex (so that a facet's value
+follows: its own circumradius when Gabriel, else its smaller cell's), and a
+dense cell index used to address per-cell arrays: 16 bytes per cell.
 
 \tparam Gt a geometric traits class, model of `DelaunayTriangulationTraits_3`.
 \tparam Cb a cell base, model of `DelaunayTriangulationCellBase_3`
@@ -59,18 +58,24 @@ public:
   double alpha() const { return m_alpha; }
   void set_alpha(double a) { m_alpha = a; }
 
-  /// ordinary alpha value of the facet opposite to vertex `i`
-  double facet_alpha(int i) const { return m_facet_alpha[i]; }
-  void set_facet_alpha(int i, double a) { m_facet_alpha[i] = a; }
+  /// whether vertex `i` lies strictly inside the smallest ball circumscribing
+  /// the facet opposite to it; a facet is Gabriel when neither of its two
+  /// opposite vertices encroaches it
+  bool encroaches_facet(int i) const { return (m_encroached >> i) & 1u; }
+  void set_encroaches_facet(int i, bool b)
+  {
+    m_encroached = static_cast<unsigned char>(b ? (m_encroached | (1u << i))
+                                                : (m_encroached & ~(1u << i)));
+  }
 
   /// dense index in `[0, number_of_cells())`, infinite cells included
   std::size_t cell_index() const { return m_index; }
-  void set_cell_index(std::size_t i) { m_index = i; }
+  void set_cell_index(std::size_t i) { m_index = static_cast<std::uint32_t>(i); }
 
 private:
-  double                m_alpha = 0;
-  std::array<double, 4> m_facet_alpha = {{0, 0, 0, 0}};
-  std::size_t           m_index = 0;
+  double        m_alpha = 0;
+  std::uint32_t m_index = 0;
+  unsigned char m_encroached = 0;
 };
 
 } // namespace CGAL

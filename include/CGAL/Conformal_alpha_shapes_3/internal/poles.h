@@ -24,13 +24,14 @@ struct Pole
   double      distance = 0;  // |p - pole|, the circumradius of that cell
 };
 
-// Computes the pole of every finite vertex, indexed by `v->vertex_index()`.
+// Computes the pole of every finite vertex, indexed by `v->vertex_index()`,
+// from the circumcentres of the finite cells (indexed by `c->cell_index()`).
 // Precondition: dimension 3 and every finite cell's circumradius stored with
 // `set_alpha()`: the distance from a vertex to the circumcentre of an incident
-// cell is that cell's circumradius, so the farthest Voronoi vertex needs no
-// construction at all.
+// cell is that cell's circumradius.
 template <class Dt>
-std::vector<Pole<typename Dt::Cell_handle> > compute_poles(const Dt& dt)
+std::vector<Pole<typename Dt::Cell_handle> >
+compute_poles(const Dt& dt, const std::vector<typename Dt::Geom_traits::Point_3>& centers)
 {
   typedef typename Dt::Geom_traits   Gt;
   typedef typename Dt::Cell_handle   Cell_handle;
@@ -76,23 +77,13 @@ std::vector<Pole<typename Dt::Cell_handle> > compute_poles(const Dt& dt)
     }
   }
 
-  typename Gt::Construct_circumcenter_3 circumcenter =
-    dt.geom_traits().construct_circumcenter_3_object();
   for(Vertex_handle v : dt.finite_vertex_handles())
-  {
-    const std::size_t id = v->vertex_index();
-    if(!on_hull[id])
-    {
-      const Cell_handle c = farthest[id].cell;
-      u[id] = circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
-                           c->vertex(2)->point(), c->vertex(3)->point()) - v->point();
-    }
-  }
+    if(!on_hull[v->vertex_index()])
+      u[v->vertex_index()] = centers[farthest[v->vertex_index()].cell->cell_index()] - v->point();
 
   for(Cell_handle c : dt.finite_cell_handles())
   {
-    const Point center = circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
-                                      c->vertex(2)->point(), c->vertex(3)->point());
+    const Point& center = centers[c->cell_index()];
     for(int k = 0; k < 4; ++k)
     {
       const Vertex_handle v = c->vertex(k);
