@@ -1,0 +1,417 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_ESTIMATE_VERTEX_CURVATURES_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_ESTIMATE_VERTEX_CURVATURES_H
+
+#include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
+#include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+
+/// \ingroup PkgConformalAlphaShapes3Curvature
+/// Principal curvatures and directions at a vertex, as CGAL 6's
+/// `Polygon_mesh_processing::Principal_curvatures_and_directions`:
+/// `max_curvature >= min_curvature`, unit directions tangent to the surface.
+template <typename GT>
+struct Principal_curvatures_and_directions
+{
+  typename GT::FT max_curvature;
+  typename GT::FT min_curvature;
+  typename GT::Vector_3 max_direction;
+  typename GT::Vector_3 min_direction;
+};
+
+/// \ingroup PkgConformalAlphaShapes3Curvature
+/// How `estimate_vertex_curvatures()` estimates curvature at a vertex from
+/// its k-ring. See the manual for the measured accuracy of each.
+enum Curvature_estimator
+{
+  /// The paper's method: Chen-Wu vertex normals, a normal curvature per
+  /// neighbour from normal differences, and the Euler fit with `a` fixed to
+  /// the largest normal curvature and `b`, `c` by least squares.
+  PAPER_EULER_FIT,
+  /// The same normal curvatures, with all three Euler coefficients fitted by
+  /// least squares.
+  EULER_LEAST_SQUARES_FIT,
+  /// A quadric height function fitted by least squares to the positions of
+  /// the k-ring in the frame of the Chen-Wu normal, with linear terms; the
+  /// output normal is the fitted surface's. The default.
+  QUADRIC_FIT
+};
+
+namespace internal {
+
+template <typename NP>
+struct Is_named_function_parameters : std::false_type {};
+template <typename T, typename Tag, typename Base>
+struct Is_named_function_parameters<CGAL::Named_function_parameters<T, Tag, Base> > : std::true_type {};
+
+// The vertex type of a mesh; no type for a parameter pack, so that the
+// single-vertex overload drops out of `estimate_vertex_curvatures(mesh, np)`.
+template <typename PolygonMesh, bool = Is_named_function_parameters<PolygonMesh>::value>
+struct Vertex_of { typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor type; };
+template <typename PolygonMesh>
+struct Vertex_of<PolygonMesh, true> {};
+
+inline Vec3 nan_vector()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return Vec3(nan, nan, nan);
+}
+
+template <typename Point>
+Vec3 to_vec3(const Point& p)
+{
+  return Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+// Chen-Wu vertex normal (METHOD 5): unit face normals weighted by the inverse
+// distance from the vertex to the face centroid. Faces of zero area are
+// skipped; NaN when no face is left.
+template <typename PolygonMesh, typename VPM>
+Vec3 chen_wu_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                    const PolygonMesh& pmesh, const VPM& vpm)
+{
+  Vec3 sum = Vec3::Zero();
+  const Vec3 p = to_vec3(get(vpm, v));
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, pmesh), pmesh))
+  {
+    if(is_border(h, pmesh))
+      continue;
+    const Vec3 a = to_vec3(get(vpm, source(h, pmesh)));
+    const Vec3 b = to_vec3(get(vpm, target(h, pmesh)));
+    const Vec3 c = to_vec3(get(vpm, target(next(h, pmesh), pmesh)));
+    const Vec3 cross = (b - a).cross(c - a);
+    const double twice_area = cross.norm();
+    const double to_centroid = ((a + b + c) / 3 - p).norm();
+    if(!(twice_area > 0) || !(to_centroid > 0))
+      continue;
+    sum += cross / (twice_area * to_centroid);
+  }
+  const double len = sum.norm();
+  return len > 0 ? Vec3(sum / len) : nan_vector();
+}
+
+// Collects the vertices at most `rings` edges away from v, v excluded.
+// `mark(u)` returns true the first time it is called for u.
+template <typename PolygonMesh, typename Mark>
+void collect_rings(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                   const PolygonMesh& pmesh, int rings, Mark mark,
+                   std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& out)
+{
+  out.clear();
+  mark(v);
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  out.push_back(v);  // the frontier starts at v; v is removed at the end
+  for(int r = 0; r < rings; ++r)
+  {
+    begin = (r == 0) ? 0 : end;
+    end = out.size();
+    for(std::size_t i = begin; i < end; ++i)
+    {
+      if(halfedge(out[i], pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge())
+        continue;
+      for(auto u : CGAL::vertices_around_target(out[i], pmesh))
+        if(mark(u))
+          out.push_back(u);
+    }
+    if(out.size() == end)
+      break;
+  }
+  out.erase(out.begin());
+}
+
+// The estimate at one vertex; `normal_of(u)` gives a vertex's Chen-Wu normal.
+// A k-ring too small or too degenerate for the fit is widened by up to two
+// rings before the vertex is given up (NaN curvature).
+template <typename PolygonMesh, typename VPM, typename Normal_of, typename Mark_factory>
+bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                        const PolygonMesh& pmesh, const VPM& vpm, int rings,
+                        Curvature_estimator estimator, Normal_of normal_of,
+                        Mark_factory new_mark, Local_curvature& out)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  out = Local_curvature{normal_of(v), nan, nan, nan_vector(), nan_vector()};
+  if(!std::isfinite(out.normal.x()))
+    return false;
+
+  const Vec3 p = to_vec3(get(vpm, v));
+  std::vector<vertex_descriptor> ring;
+  std::vector<Neighbour> nbrs;
+  for(int k = rings; k <= rings + 2; ++k)
+  {
+    collect_rings(v, pmesh, k, new_mark(), ring);
+    nbrs.clear();
+    for(vertex_descriptor u : ring)
+    {
+      const Vec3 offset = to_vec3(get(vpm, u)) - p;
+      if(!(offset.squaredNorm() > 0))
+        continue;  // a coincident vertex carries no direction
+      double kn = 0;
+      if(estimator != QUADRIC_FIT)
+      {
+        const Vec3 n_u = normal_of(u);
+        if(!std::isfinite(n_u.x()))
+          continue;
+        kn = normal_curvature(offset, out.normal, n_u);
+      }
+      nbrs.push_back(Neighbour{offset, kn});
+    }
+    Local_curvature fit;
+    bool ok = false;
+    switch(estimator)
+    {
+      case PAPER_EULER_FIT:         ok = paper_euler_fit(out.normal, nbrs, fit); break;
+      case EULER_LEAST_SQUARES_FIT: ok = euler_least_squares_fit(out.normal, nbrs, fit); break;
+      case QUADRIC_FIT:             ok = quadric_fit(out.normal, nbrs, fit); break;
+    }
+    if(ok && std::isfinite(fit.k1) && std::isfinite(fit.k2))
+    {
+      out = fit;
+      return true;
+    }
+  }
+  return false;
+}
+
+template <typename PolygonMesh, typename NamedParameters>
+struct Curvature_maps
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type GT;
+  typedef typename GT::FT FT;
+  typedef typename GT::Vector_3 Vector_3;
+  typedef Principal_curvatures_and_directions<GT> Principal;
+
+  typedef CGAL::Constant_property_map<vertex_descriptor, Vector_3> Default_normal_map;
+  typedef CGAL::Constant_property_map<vertex_descriptor, FT> Default_scalar_map;
+  typedef CGAL::Constant_property_map<vertex_descriptor, Principal> Default_principal_map;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::vertex_normal_map_t, NamedParameters, Default_normal_map>::type Normal_map;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    internal_np_cas3::vertex_mean_curvature_map_t, NamedParameters, Default_scalar_map>::type H_map;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    internal_np_cas3::vertex_Gaussian_curvature_map_t, NamedParameters, Default_scalar_map>::type K_map;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    internal_np_cas3::vertex_principal_curvatures_and_directions_map_t, NamedParameters,
+    Default_principal_map>::type Principal_map;
+
+  Curvature_maps(const NamedParameters& np)
+    : normal(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_normal_map),
+                                          Default_normal_map())),
+      mean(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_mean_curvature_map),
+                                        Default_scalar_map())),
+      gaussian(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_Gaussian_curvature_map), Default_scalar_map())),
+      principal(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_principal_curvatures_and_directions_map),
+        Default_principal_map()))
+  {}
+
+  static Vector_3 to_vector(const Vec3& v) { return Vector_3(FT(v.x()), FT(v.y()), FT(v.z())); }
+
+  void write(vertex_descriptor v, const Local_curvature& c) const
+  {
+    put(normal, v, to_vector(c.normal));
+    put(mean, v, FT((c.k1 + c.k2) / 2));
+    put(gaussian, v, FT(c.k1 * c.k2));
+    put(principal, v, Principal{FT(c.k1), FT(c.k2), to_vector(c.d1), to_vector(c.d2)});
+  }
+
+  Normal_map normal;
+  H_map mean;
+  K_map gaussian;
+  Principal_map principal;
+};
+
+template <typename PolygonMesh, typename NamedParameters>
+Curvature_estimator get_estimator(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::estimator), QUADRIC_FIT);
+}
+
+template <typename NamedParameters>
+int get_ring_size(const NamedParameters& np)
+{
+  const int rings = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::ring_size), 1);
+  CGAL_precondition(rings >= 1);
+  return rings < 1 ? 1 : rings;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgConformalAlphaShapes3Curvature
+
+Estimates, at every vertex of the triangle mesh `pmesh`, the unit normal,
+the mean curvature `H`, the Gaussian curvature `K`, and the principal
+curvatures and directions, writing each into the property map passed for it
+(an output is computed only when its map is passed).
+
+Conventions: with outward-oriented faces, convex regions have positive
+curvature (a sphere of radius `r`: `H = 1/r`, `K = 1/r^2`); the curvatures
+are `max_curvature >= min_curvature`, `H` their mean and `K` their product.
+
+Neighbourhood: the `k`-ring of the vertex (`ring_size`). When it is too small
+or too degenerate for the fit (fewer neighbours than unknowns, all neighbours
+along one line, a singular system), up to two more rings are used. Border
+vertices are estimated from their one-sided neighbourhood. Faces of zero area
+do not contribute to the normals. A vertex whose normal or curvature is still
+undefined (an isolated vertex, only degenerate faces, too few vertices even
+with the wider rings) gets NaN values and is counted in the return value.
+
+\tparam PolygonMesh a model of `FaceGraph` whose faces are triangles.
+\tparam NamedParameters a sequence of named parameters.
+
+\param pmesh the mesh
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{the positions of the vertices}
+    \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `GT::Point_3` as value}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, pmesh)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{a property map associating to each vertex of `pmesh` a unique index between `0` and `num_vertices(pmesh) - 1`}
+    \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamType{a model of `Kernel`}
+    \cgalParamDefault{deduced from the point type}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_normal_map}
+    \cgalParamDescription{output: unit normals (the Chen-Wu normal for the Euler estimators, the fitted surface's for `QUADRIC_FIT`)}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `GT::Vector_3` as value}
+    \cgalParamDefault{not computed}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_mean_curvature_map}
+    \cgalParamDescription{output: mean curvature `H`}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `GT::FT` as value}
+    \cgalParamDefault{not computed}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_Gaussian_curvature_map}
+    \cgalParamDescription{output: Gaussian curvature `K`}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `GT::FT` as value}
+    \cgalParamDefault{not computed}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_principal_curvatures_and_directions_map}
+    \cgalParamDescription{output: principal curvatures and directions}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `Principal_curvatures_and_directions<GT>` as value}
+    \cgalParamDefault{not computed}
+  \cgalParamNEnd
+  \cgalParamNBegin{ring_size}
+    \cgalParamDescription{the scale: the size `k >= 1` of the ring of neighbours used at each vertex}
+    \cgalParamType{`int`}
+    \cgalParamDefault{1}
+  \cgalParamNEnd
+  \cgalParamNBegin{estimator}
+    \cgalParamDescription{the estimator}
+    \cgalParamType{`Curvature_estimator`}
+    \cgalParamDefault{`QUADRIC_FIT`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the number of vertices whose curvature is undefined (NaN).
+*/
+template <typename PolygonMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters,
+          typename = typename std::enable_if<
+            internal::Is_named_function_parameters<NamedParameters>::value>::type>
+std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
+                                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef internal::Curvature_maps<PolygonMesh, NamedParameters> Maps;
+  const Maps maps(np);
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, pmesh));
+  const Curvature_estimator estimator = internal::get_estimator<PolygonMesh>(np);
+  const int rings = internal::get_ring_size(np);
+
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
+  std::vector<internal::Vec3> normals(num_vertices(pmesh));
+  for(vertex_descriptor v : vertices(pmesh))
+    normals[get(vertex_index, v)] =
+      halfedge(v, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge()
+        ? internal::nan_vector() : internal::chen_wu_normal(v, pmesh, vpm);
+
+  // a vertex is marked in the current ring search when its stamp is current
+  std::vector<std::size_t> stamps(num_vertices(pmesh), 0);
+  std::size_t stamp = 0;
+  auto new_mark = [&]() {
+    ++stamp;
+    return [&, s = stamp](vertex_descriptor u) {
+      std::size_t& mark = stamps[get(vertex_index, u)];
+      const bool fresh = mark != s;
+      mark = s;
+      return fresh;
+    };
+  };
+
+  std::size_t undefined = 0;
+  internal::Local_curvature c;
+  for(vertex_descriptor v : vertices(pmesh))
+  {
+    if(!internal::estimate_at_vertex(v, pmesh, vpm, rings, estimator,
+                                     [&](vertex_descriptor u) { return normals[get(vertex_index, u)]; }, new_mark, c))
+      ++undefined;
+    maps.write(v, c);
+  }
+  return undefined;
+}
+
+/*!
+\ingroup PkgConformalAlphaShapes3Curvature
+The same estimate at the single vertex `v`, written into the maps passed in
+`np` at `v` only. Its cost is that of the vertex's neighbourhood.
+\returns whether the curvature at `v` is defined.
+*/
+template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type v,
+                                const PolygonMesh& pmesh,
+                                const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef internal::Curvature_maps<PolygonMesh, NamedParameters> Maps;
+  const Maps maps(np);
+  const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, pmesh));
+  auto normal_of = [&](vertex_descriptor u) {
+    return halfedge(u, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge()
+             ? internal::nan_vector() : internal::chen_wu_normal(u, pmesh, vpm);
+  };
+  std::unordered_set<vertex_descriptor> marked;
+  auto new_mark = [&]() {
+    marked.clear();
+    return [&marked](vertex_descriptor u) { return marked.insert(u).second; };
+  };
+  internal::Local_curvature c;
+  const bool ok = internal::estimate_at_vertex(v, pmesh, vpm, internal::get_ring_size(np),
+                                               internal::get_estimator<PolygonMesh>(np), normal_of, new_mark, c);
+  maps.write(v, c);
+  return ok;
+}
+
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_ESTIMATE_VERTEX_CURVATURES_H

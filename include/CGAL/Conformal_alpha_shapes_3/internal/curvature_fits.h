@@ -1,0 +1,213 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_FITS_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_FITS_H
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+// Small fixed-size vector algebra on Eigen, independent of the kernel.
+typedef Eigen::Vector3d Vec3;
+
+// The curvature of a surface at one point, in 3D, with k1 >= k2.
+struct Local_curvature
+{
+  Vec3 normal;
+  double k1, k2;
+  Vec3 d1, d2;
+};
+
+// An orthonormal tangent frame (e1, e2, n), right-handed: e2 = n x e1.
+struct Tangent_frame
+{
+  Vec3 e1, e2, n;
+};
+
+inline Tangent_frame frame_from_normal_and_direction(const Vec3& n, const Vec3& direction)
+{
+  Tangent_frame f;
+  f.n = n;
+  f.e1 = (direction - direction.dot(n) * n).normalized();
+  f.e2 = n.cross(f.e1);
+  return f;
+}
+
+inline Tangent_frame frame_from_normal(const Vec3& n)
+{
+  const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  return frame_from_normal_and_direction(n, helper);
+}
+
+// Principal curvatures and directions of the second fundamental form
+// [[a, b/2], [b/2, c]] given in the frame (e1, e2).
+inline Local_curvature from_tangent_form(const Tangent_frame& f, double a, double b, double c)
+{
+  Eigen::Matrix2d form;
+  form << a, b / 2, b / 2, c;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(form);  // increasing eigenvalues
+  const Eigen::Vector2d v_min = eig.eigenvectors().col(0), v_max = eig.eigenvectors().col(1);
+  return Local_curvature{f.n, eig.eigenvalues()(1), eig.eigenvalues()(0),
+                         v_max(0) * f.e1 + v_max(1) * f.e2, v_min(0) * f.e1 + v_min(1) * f.e2};
+}
+
+// One neighbour seen from the centre vertex p: q - p, and the normal
+// curvature estimate along it.
+struct Neighbour
+{
+  Vec3 offset;
+  double normal_curvature;
+};
+
+// The normal curvature along q - p from the normal difference (METHOD 5,
+// eq. 3.15): <q - p, N_q - N_p> / |q - p|^2.
+inline double normal_curvature(const Vec3& offset, const Vec3& n_p, const Vec3& n_q)
+{
+  return offset.dot(n_q - n_p) / offset.squaredNorm();
+}
+
+// Unit tangent direction of an offset (METHOD 5, eq. 3.6); false when the
+// offset is along the normal.
+inline bool tangent_direction(const Vec3& offset, const Vec3& n, Vec3& t)
+{
+  t = offset - offset.dot(n) * n;
+  const double len = t.norm();
+  if(!(len > 1e-12 * offset.norm()))
+    return false;
+  t /= len;
+  return true;
+}
+
+// The paper's Euler fit: e1 along the neighbour of largest normal curvature,
+// a fixed to that curvature, b and c by least squares (METHOD 5).
+inline bool paper_euler_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local_curvature& out)
+{
+  std::size_t best = nbrs.size();
+  for(std::size_t i = 0; i < nbrs.size(); ++i)
+    if(best == nbrs.size() || nbrs[i].normal_curvature > nbrs[best].normal_curvature)
+      best = i;
+  if(best == nbrs.size())
+    return false;
+  Vec3 t_best;
+  if(!tangent_direction(nbrs[best].offset, n, t_best))
+    return false;
+  const Tangent_frame f = frame_from_normal_and_direction(n, t_best);
+  const double a = nbrs[best].normal_curvature;
+
+  double a11 = 0, a12 = 0, a22 = 0, a13 = 0, a23 = 0;
+  for(const Neighbour& q : nbrs)
+  {
+    Vec3 t;
+    if(!tangent_direction(q.offset, n, t))
+      continue;
+    const double c = t.dot(f.e1), s = t.dot(f.e2);
+    const double r = q.normal_curvature - a * c * c;
+    a11 += c * c * s * s;
+    a12 += c * s * s * s;
+    a22 += s * s * s * s;
+    a13 += r * c * s;
+    a23 += r * s * s;
+  }
+  const double det = a11 * a22 - a12 * a12;
+  if(!(det > 1e-12 * a11 * a22) || !(a11 * a22 > 0))
+    return false;
+  const double b = (a13 * a22 - a23 * a12) / det;
+  const double cc = (a11 * a23 - a12 * a13) / det;
+  out = from_tangent_form(f, a, b, cc);
+  return true;
+}
+
+// Least-squares fit of all three Euler coefficients to the normal
+// curvatures: k_i ~ a cos^2 + b cos sin + c sin^2.
+inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbour>& nbrs,
+                                    Local_curvature& out)
+{
+  const Tangent_frame f = frame_from_normal(n);
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  std::size_t used = 0;
+  for(const Neighbour& q : nbrs)
+  {
+    Vec3 t;
+    if(!tangent_direction(q.offset, n, t))
+      continue;
+    const double c = t.dot(f.e1), s = t.dot(f.e2);
+    const Eigen::Vector3d phi(c * c, c * s, s * s);
+    m += phi * phi.transpose();
+    rhs += q.normal_curvature * phi;
+    ++used;
+  }
+  if(used < 3)
+    return false;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
+  if(!(eig.eigenvalues()(0) > 1e-10 * eig.eigenvalues()(2)))
+    return false;
+  const Eigen::Vector3d abc = m.ldlt().solve(rhs);
+  out = from_tangent_form(f, abc(0), abc(1), abc(2));
+  return true;
+}
+
+// Least-squares fit of the height function z = A x^2 + B x y + C y^2 + D x + E y
+// over the neighbours' positions in the frame of the normal n; the linear
+// terms absorb the normal's error, and the curvature is that of the graph at
+// the origin. Curvature is positive where the surface bends away from n.
+inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local_curvature& out)
+{
+  if(nbrs.size() < 5)
+    return false;
+  const Tangent_frame f = frame_from_normal(n);
+  double h = 0;
+  for(const Neighbour& q : nbrs)
+    h += q.offset.norm();
+  h /= double(nbrs.size());
+  if(!(h > 0))
+    return false;
+
+  Eigen::MatrixXd design(nbrs.size(), 5);
+  Eigen::VectorXd z(nbrs.size());
+  for(std::size_t i = 0; i < nbrs.size(); ++i)
+  {
+    const Vec3 o = nbrs[i].offset / h;  // unit-free coordinates condition the fit
+    const double x = o.dot(f.e1), y = o.dot(f.e2);
+    design.row(Eigen::Index(i)) << x * x, x * y, y * y, x, y;
+    z(Eigen::Index(i)) = o.dot(f.n);
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
+  qr.setThreshold(1e-8);
+  if(qr.rank() < 5)
+    return false;
+  const Eigen::VectorXd coef = qr.solve(z);
+  const double A = coef(0) / h, B = coef(1) / h, C = coef(2) / h, D = coef(3), E = coef(4);
+
+  // first and second fundamental forms of (x, y, z(x, y)) at the origin,
+  // the second one for the normal (-D, -E, 1) / w
+  const double w = std::sqrt(1 + D * D + E * E);
+  Eigen::Matrix2d first, second;
+  first << 1 + D * D, D * E, D * E, 1 + E * E;
+  second << 2 * A, B, B, 2 * C;
+  second /= w;
+  // curvature positive where the surface bends away from the normal: -second
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> eig(-second, first);
+  if(eig.info() != Eigen::Success)
+    return false;
+  const Vec3 xu = f.e1 + D * f.n, xv = f.e2 + E * f.n;
+  const Eigen::Vector2d v_min = eig.eigenvectors().col(0), v_max = eig.eigenvectors().col(1);
+  out = Local_curvature{((f.n - D * f.e1 - E * f.e2) / w).normalized(), eig.eigenvalues()(1),
+                        eig.eigenvalues()(0), (v_max(0) * xu + v_max(1) * xv).normalized(),
+                        (v_min(0) * xu + v_min(1) * xv).normalized()};
+  return true;
+}
+
+} // namespace internal
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_FITS_H

@@ -1,0 +1,78 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_NAMED_PARAMETERS_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_NAMED_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+
+// Tags of the package's own named parameters. They live here, not in
+// CGAL::internal_np, where later CGAL versions define some of the same names.
+namespace internal_np_cas3 {
+enum vertex_mean_curvature_map_t { vertex_mean_curvature_map };
+enum vertex_Gaussian_curvature_map_t { vertex_Gaussian_curvature_map };
+enum vertex_principal_curvatures_and_directions_map_t { vertex_principal_curvatures_and_directions_map };
+enum ring_size_t { ring_size };
+enum estimator_t { estimator };
+enum vertex_input_index_map_t { vertex_input_index_map };
+enum local_scale_t { local_scale };
+} // namespace internal_np_cas3
+
+/// \ingroup PkgConformalAlphaShapes3NamedParameters
+/// Named parameters of this package. Each `name(value)` starts a pack and
+/// `name(value, np)` adds to the pack `np`, which may hold CGAL's own named
+/// parameters; the usual CGAL members (`.vertex_point_map(...)`, ...) chain
+/// after either. `combine(np1, np2)` joins two packs.
+namespace parameters {
+
+#define CGAL_CAS3_ADD_NAMED_PARAMETER(NAME)                                                     \
+  template <typename K>                                                                         \
+  CGAL::Named_function_parameters<K, internal_np_cas3::NAME##_t> NAME(const K& k)               \
+  {                                                                                             \
+    return CGAL::Named_function_parameters<K, internal_np_cas3::NAME##_t>(k);                   \
+  }                                                                                             \
+  template <typename K, typename T, typename Tag, typename Base>                                \
+  CGAL::Named_function_parameters<K, internal_np_cas3::NAME##_t,                                \
+                                  CGAL::Named_function_parameters<T, Tag, Base> >               \
+  NAME(const K& k, const CGAL::Named_function_parameters<T, Tag, Base>& np)                     \
+  {                                                                                             \
+    return CGAL::Named_function_parameters<K, internal_np_cas3::NAME##_t,                       \
+                                           CGAL::Named_function_parameters<T, Tag, Base> >(k, np); \
+  }
+
+CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_mean_curvature_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_Gaussian_curvature_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_principal_curvatures_and_directions_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(ring_size)
+CGAL_CAS3_ADD_NAMED_PARAMETER(estimator)
+CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale)
+
+#undef CGAL_CAS3_ADD_NAMED_PARAMETER
+
+/// The pack holding the parameters of `np1` and of `np2`; where both hold
+/// the same parameter, `np1`'s value is used.
+template <typename T, typename Tag, typename T2, typename Tag2, typename Base2>
+CGAL::Named_function_parameters<T, Tag, CGAL::Named_function_parameters<T2, Tag2, Base2> >
+combine(const CGAL::Named_function_parameters<T, Tag, CGAL::internal_np::No_property>& np1,
+        const CGAL::Named_function_parameters<T2, Tag2, Base2>& np2)
+{
+  return {np1.v, np2};
+}
+
+template <typename T, typename Tag, typename Base, typename T2, typename Tag2, typename Base2>
+auto combine(const CGAL::Named_function_parameters<T, Tag, Base>& np1,
+             const CGAL::Named_function_parameters<T2, Tag2, Base2>& np2)
+{
+  auto rest = combine(static_cast<const Base&>(np1), np2);
+  return CGAL::Named_function_parameters<T, Tag, decltype(rest)>(np1.v, rest);
+}
+
+} // namespace parameters
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_NAMED_PARAMETERS_H
