@@ -155,34 +155,44 @@ inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbour>&
   return true;
 }
 
-// Least-squares fit of the height function z = A x^2 + B x y + C y^2 + D x + E y
-// over the neighbours' positions in the frame of the normal n; the linear
-// terms absorb the normal's error, and the curvature is that of the graph at
+// Least-squares fit of the height function
+//   z = A x^2 + B x y + C y^2 + D x + E y + F
+// to the vertex (at the origin) and its neighbours, in the frame of the normal
+// n. The linear terms absorb the normal's error and the constant term the
+// vertex's own displacement (noise); the curvature is that of the graph at
 // the origin. Curvature is positive where the surface bends away from n.
 inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local_curvature& out)
 {
   if(nbrs.size() < 5)
     return false;
   const Tangent_frame f = frame_from_normal(n);
-  double h = 0;
+  double h = 0, reach = 0;
   for(const Neighbour& q : nbrs)
+  {
     h += q.offset.norm();
+    reach = (std::max)(reach, q.offset.norm());
+  }
   h /= double(nbrs.size());
   if(!(h > 0))
     return false;
+  reach /= h;
 
-  Eigen::MatrixXd design(nbrs.size(), 5);
-  Eigen::VectorXd z(nbrs.size());
+  Eigen::MatrixXd design(nbrs.size() + 1, 6);
+  Eigen::VectorXd z(nbrs.size() + 1);
+  design.row(0) << 0, 0, 0, 0, 0, 1;
+  z(0) = 0;
   for(std::size_t i = 0; i < nbrs.size(); ++i)
   {
     const Vec3 o = nbrs[i].offset / h;  // unit-free coordinates condition the fit
     const double x = o.dot(f.e1), y = o.dot(f.e2);
-    design.row(Eigen::Index(i)) << x * x, x * y, y * y, x, y;
-    z(Eigen::Index(i)) = o.dot(f.n);
+    const double t = o.squaredNorm() / (2.25 * reach * reach);
+    const double w = (1 - t) * (1 - t);  // fades to 0 at 1.5 times the ring's reach
+    design.row(Eigen::Index(i + 1)) << w * x * x, w * x * y, w * y * y, w * x, w * y, w;
+    z(Eigen::Index(i + 1)) = w * o.dot(f.n);
   }
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
   qr.setThreshold(1e-8);
-  if(qr.rank() < 5)
+  if(qr.rank() < 6)
     return false;
   const Eigen::VectorXd coef = qr.solve(z);
   const double A = coef(0) / h, B = coef(1) / h, C = coef(2) / h, D = coef(3), E = coef(4);
