@@ -166,8 +166,9 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(cylinder_mesh, Mesh, Mesh_types)
         axis_min.push_back(std::abs(est.principal[i].min_direction.z()));
       }
       BOOST_TEST_INFO("scale " << scale << " estimator " << estimator_name[e]);
-      BOOST_TEST(quantile(eh, 0.5) < (e == CAS3::QUADRIC_FIT ? 0.01 : 0.1));
-      BOOST_TEST(quantile(ek, 0.5) < (e == CAS3::QUADRIC_FIT ? 0.01 : 0.1));
+      // a 2-ring on 64 samples around the axis: the quadric's bias is about 1%
+      BOOST_TEST(quantile(eh, 0.5) < (e == CAS3::QUADRIC_FIT ? 0.02 : 0.1));
+      BOOST_TEST(quantile(ek, 0.5) < (e == CAS3::QUADRIC_FIT ? 0.02 : 0.1));
       BOOST_TEST(quantile(axis_max, 0.9) < 0.2);   // max curvature goes around the axis
       BOOST_TEST(quantile(axis_min, 0.1) > 0.97);  // min curvature along it
     }
