@@ -7,6 +7,8 @@
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/poles.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
+#include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/Iterator_range.h>
@@ -27,6 +29,26 @@
 #include <vector>
 
 namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+
+/// \ingroup PkgConformalAlphaShapes3Classes
+/// How `Conformal_alpha_shape_3` computes the local scale of each vertex from
+/// the Voronoi diagram of the points (named parameter `local_scale_estimator`).
+enum Local_scale_estimator
+{
+  /// The paper's: the distance to the pole, the Amenta-Bern negative pole
+  /// (see `Conformal_alpha_shape_3::pole()`). On noisy samples it collapses
+  /// for points displaced inwards, once the noise exceeds the local sagitta.
+  PAPER_POLE_DISTANCE,
+  /// The distance to the pole, but at least 4 times the local sample
+  /// spacing (the length of the vertex's 6th shortest Delaunay edge): a
+  /// sample cannot resolve features much smaller than its spacing, and the
+  /// collapsed pole distances of noisy points are exactly such features.
+  /// Identical to `PAPER_POLE_DISTANCE` on dense noiseless samples. The default.
+  NOISE_ROBUST_POLE_DISTANCE
+};
+
+} // namespace Conformal_alpha_shapes_3
 
 /*!
 \ingroup PkgConformalAlphaShapes3Classes
@@ -102,22 +124,26 @@ public:
   /// An empty shape; fill it with `make_conformal_alpha_shape()`.
   explicit Conformal_alpha_shape_3(FT alpha = FT(0)) : m_alpha(alpha) {}
 
-  /// The shape of the points in `[first, last)`, local scales from poles.
+  /// The shape of the points in `[first, last)`, local scales from poles
+  /// as `make_conformal_alpha_shape()` computes them.
   /// \throws std::invalid_argument as `make_conformal_alpha_shape()`.
-  template <class InputIterator>
-  Conformal_alpha_shape_3(InputIterator first, InputIterator last, FT alpha = FT(0))
-    : m_alpha(alpha)
+  template <class InputIterator, class NamedParameters = parameters::Default_named_parameters>
+  Conformal_alpha_shape_3(InputIterator first, InputIterator last,
+                          const NamedParameters& np = parameters::default_values(),
+                          typename std::enable_if<Conformal_alpha_shapes_3::internal::
+                            Is_named_function_parameters<NamedParameters>::value>::type* = nullptr)
+    : m_alpha(0)
   {
-    make_conformal_alpha_shape(first, last);
+    make_conformal_alpha_shape(first, last, np);
   }
 
   /// The shape of the points in `[first, last)` with caller-supplied local
   /// scales, one per input point, read from `scales_first`.
-  template <class InputIterator, class ScaleIterator,
-            class = typename std::enable_if<!std::is_arithmetic<ScaleIterator>::value>::type>
-  Conformal_alpha_shape_3(InputIterator first, InputIterator last,
-                          ScaleIterator scales_first, FT alpha = FT(0))
-    : m_alpha(alpha)
+  template <class InputIterator, class ScaleIterator>
+  Conformal_alpha_shape_3(InputIterator first, InputIterator last, ScaleIterator scales_first,
+                          typename std::enable_if<!Conformal_alpha_shapes_3::internal::
+                            Is_named_function_parameters<ScaleIterator>::value>::type* = nullptr)
+    : m_alpha(0)
   {
     make_conformal_alpha_shape(first, last, scales_first);
   }
@@ -127,21 +153,43 @@ public:
   local scales from poles. Duplicate points collapse into one vertex that
   remembers all their indices. Returns the number of input points.
 
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{local_scale_estimator}
+      \cgalParamDescription{how the local scale of each vertex is computed}
+      \cgalParamType{`Conformal_alpha_shapes_3::Local_scale_estimator`}
+      \cgalParamDefault{`Conformal_alpha_shapes_3::NOISE_ROBUST_POLE_DISTANCE`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
   \throws std::invalid_argument, leaving the shape empty, when a coordinate
   is NaN or infinite (the message names the first such index), or when the
   points do not span 3D (empty input, fewer than 4 distinct points, all
   coplanar or collinear): the filtration needs a 3D triangulation.
   */
-  template <class InputIterator>
-  size_type make_conformal_alpha_shape(InputIterator first, InputIterator last)
+  template <class InputIterator, class NamedParameters = parameters::Default_named_parameters>
+  size_type make_conformal_alpha_shape(InputIterator first, InputIterator last,
+                                       const NamedParameters& np = parameters::default_values(),
+                                       typename std::enable_if<Conformal_alpha_shapes_3::internal::
+                                         Is_named_function_parameters<NamedParameters>::value>::type* = nullptr)
   {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    namespace CAS3 = Conformal_alpha_shapes_3;
+    const CAS3::Local_scale_estimator estimator = choose_parameter(
+      get_parameter(np, CAS3::internal_np_cas3::local_scale_estimator), CAS3::NOISE_ROBUST_POLE_DISTANCE);
+
     insert_points(first, last);
-    const std::vector<Pole> poles =
-      Conformal_alpha_shapes_3::internal::compute_poles(*this, store_cell_values());
+    const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, store_cell_values());
     for(Vertex_handle v : this->finite_vertex_handles())
     {
       v->set_pole_cell(poles[v->vertex_index()].cell);
       v->set_local_scale(poles[v->vertex_index()].distance);
+    }
+    if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
+    {
+      const std::vector<double> spacing = CAS3::internal::kth_shortest_edge_lengths<6>(*this);
+      for(Vertex_handle v : this->finite_vertex_handles())
+        v->set_local_scale((std::max)(v->local_scale(), 4 * spacing[v->vertex_index()]));
     }
     return m_input_vertices.size();
   }
@@ -153,10 +201,12 @@ public:
   \throws std::invalid_argument also when a scale is not finite and positive.
   */
   template <class InputIterator, class ScaleIterator>
-  size_type make_conformal_alpha_shape(InputIterator first, InputIterator last,
-                                       ScaleIterator scales_first)
+  size_type make_conformal_alpha_shape(InputIterator first, InputIterator last, ScaleIterator scales_first,
+                                       typename std::enable_if<!Conformal_alpha_shapes_3::internal::
+                                         Is_named_function_parameters<ScaleIterator>::value>::type* = nullptr)
   {
-    make_conformal_alpha_shape(first, last);
+    make_conformal_alpha_shape(first, last, Conformal_alpha_shapes_3::parameters::local_scale_estimator(
+                                              Conformal_alpha_shapes_3::PAPER_POLE_DISTANCE));
     for(Vertex_handle v : this->finite_vertex_handles())
       v->set_local_scale(std::numeric_limits<double>::infinity());
     for(size_type i = 0; i < m_input_vertices.size(); ++i, ++scales_first)
@@ -328,10 +378,28 @@ public:
   { return std::upper_bound(alpha_begin(), alpha_end(), alpha); }
 
   /*!
-  The paper's "q of the range of regular facet values": the values of the
-  finite facets that are `REGULAR` or `SINGULAR` for some scale (those whose
-  own value is below the larger value of their two cells, or that lie on the
-  convex hull), sorted increasingly, are read at rank `round(q * (n - 1))`.
+  Writes the values of the finite facets that are `REGULAR` or `SINGULAR`
+  for some scale (those whose own value is below the larger value of their
+  two cells, or that lie on the convex hull), in no particular order: the
+  "regular face alpha values" of the paper, on which `alpha_at_quantile()`
+  reads its quantiles.
+  */
+  template <class OutputIterator>
+  OutputIterator boundary_facet_alphas(OutputIterator out) const
+  {
+    for(const Facet& f : this->finite_facets())
+    {
+      const Critical_values s = facet_status(f.first, f.second);
+      if(s.own < s.max || s.on_hull)
+        *out++ = s.own;
+    }
+    return out;
+  }
+
+  /*!
+  The paper's "q of the range of regular facet values": the values written by
+  `boundary_facet_alphas()`, sorted increasingly, read at rank
+  `round(q * (n - 1))`.
   \pre `0 <= q <= 1` and `dimension() == 3`.
   */
   FT alpha_at_quantile(double q) const
@@ -339,12 +407,7 @@ public:
     CGAL_precondition(q >= 0 && q <= 1 && this->dimension() == 3);
     std::vector<FT> values;
     values.reserve(this->number_of_finite_facets());
-    for(const Facet& f : this->finite_facets())
-    {
-      const Critical_values s = facet_status(f.first, f.second);
-      if(s.own < s.max || s.on_hull)
-        values.push_back(s.own);
-    }
+    boundary_facet_alphas(std::back_inserter(values));
     CGAL_assertion(!values.empty());
     const auto nth = values.begin() + static_cast<std::ptrdiff_t>(
                        std::floor(q * double(values.size() - 1) + 0.5));

@@ -55,11 +55,6 @@ enum Curvature_estimator
 
 namespace internal {
 
-template <typename NP>
-struct Is_named_function_parameters : std::false_type {};
-template <typename T, typename Tag, typename Base>
-struct Is_named_function_parameters<CGAL::Named_function_parameters<T, Tag, Base> > : std::true_type {};
-
 // The vertex type of a mesh; no type for a parameter pack, so that the
 // single-vertex overload drops out of `estimate_vertex_curvatures(mesh, np)`.
 template <typename PolygonMesh, bool = Is_named_function_parameters<PolygonMesh>::value>

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -34,6 +35,10 @@ struct Boundary_surface_report
   std::size_t number_of_filled_cells = 0;
   /// cells the manifold repair removed from the solid
   std::size_t number_of_carved_cells = 0;
+  /// cells removed from the solid to bring vertices onto the surface
+  std::size_t number_of_sculpted_cells = 0;
+  /// vertices where the surface pinches, written once per umbrella of faces
+  std::size_t number_of_pinched_vertices = 0;
   /// input points whose vertex is not on the surface (duplicates counted)
   std::size_t number_of_points_off_surface = 0;
   /// input points of the shape
@@ -57,9 +62,9 @@ template <class Cas>
 std::size_t number_of_points_off_boundary(const Cas& cas, const Solid_labeling<Cas>& solid)
 {
   std::vector<char> on(cas.number_of_vertices(), 0);
-  for(const auto& triangle : solid.boundary())
-    for(typename Cas::Vertex_handle v : triangle)
-      on[v->vertex_index()] = 1;
+  for(const typename Cas::Facet& f : solid.boundary())
+    for(int k = 1; k < 4; ++k)
+      on[f.first->vertex((f.second + k) & 3)->vertex_index()] = 1;
   std::size_t off = 0;
   for(typename Cas::Vertex_handle v : cas.finite_vertex_handles())
     if(!on[v->vertex_index()])
@@ -151,39 +156,56 @@ Boundary_surface_report extract_boundary_surface(const ConformalAlphaShape& cas,
   report.number_of_filled_cells = solid.number_of_filled_cells();
   report.number_of_carved_cells = solid.number_of_carved_cells();
 
-  std::vector<vertex_descriptor> mesh_vertex(cas.number_of_vertices(),
-                                             boost::graph_traits<PolygonMesh>::null_vertex());
-  auto mesh_vertex_of = [&](typename Cas::Vertex_handle v) {
-    vertex_descriptor& mv = mesh_vertex[v->vertex_index()];
-    if(mv == boost::graph_traits<PolygonMesh>::null_vertex())
+  report.number_of_sculpted_cells = solid.number_of_sculpted_cells();
+
+  // one mesh vertex per umbrella of faces around a vertex of the shape, at
+  // mesh_vertex[first_umbrella[v] + umbrella]
+  const vertex_descriptor null_vertex = boost::graph_traits<PolygonMesh>::null_vertex();
+  std::vector<std::size_t> first_umbrella(cas.number_of_vertices() + 1, 0);
+  for(typename Cas::Vertex_handle v : cas.finite_vertex_handles())
+    first_umbrella[v->vertex_index() + 1] = std::size_t(solid.number_of_umbrellas(v));
+  std::partial_sum(first_umbrella.begin(), first_umbrella.end(), first_umbrella.begin());
+  std::vector<vertex_descriptor> mesh_vertex(first_umbrella.back(), null_vertex);
+  auto mesh_vertex_of = [&](typename Cas::Vertex_handle v, int umbrella) {
+    vertex_descriptor& mv = mesh_vertex[first_umbrella[v->vertex_index()] + std::size_t(umbrella)];
+    if(mv == null_vertex)
     {
       mv = add_vertex(pmesh);
       const typename Cas::Point& p = v->point();
       put(vpm, mv, Mesh_point(p.x(), p.y(), p.z()));
       put(input_index, mv, *cas.input_indices(v).begin());
       ++report.number_of_vertices;
+      report.number_of_pinched_vertices += umbrella == 1 ? 1 : 0;
     }
     return mv;
   };
 
-  for(const auto& triangle : solid.boundary())
+  // a closed triangle mesh has 3/2 edges per face and about half as many vertices
+  const std::size_t faces = solid.boundary().size();
+  reserve(pmesh, num_vertices(pmesh) + faces / 2 + 2, num_edges(pmesh) + 3 * faces / 2, num_faces(pmesh) + faces);
+  for(std::size_t id = 0; id < faces; ++id)
   {
-    const std::array<vertex_descriptor, 3> face = {
-      mesh_vertex_of(triangle[0]), mesh_vertex_of(triangle[1]), mesh_vertex_of(triangle[2])};
+    const auto triangle = internal::Solid_labeling<Cas>::outward_triangle(solid.boundary()[id]);
+    const std::array<vertex_descriptor, 3> face = {mesh_vertex_of(triangle[0], solid.umbrella(id, 0)),
+                                                   mesh_vertex_of(triangle[1], solid.umbrella(id, 1)),
+                                                   mesh_vertex_of(triangle[2], solid.umbrella(id, 2))};
     CGAL_assertion_code(const auto added =) CGAL::Euler::add_face(face, pmesh);
     CGAL_assertion(added != boost::graph_traits<PolygonMesh>::null_face());
     ++report.number_of_faces;
   }
 
+  // candidate facets: in the complex, not between two INTERIOR cells (the
+  // facet's value is checked first: on most facets it already says no)
   std::size_t kept = 0;
   for(const typename Cas::Facet& f : cas.finite_facets())
   {
-    const typename Cas::Classification_type type = cas.classify(f, alpha);
-    if(type == Cas::REGULAR || type == Cas::SINGULAR)
-    {
-      ++report.number_of_candidate_facets;
-      kept += solid.is_boundary(f.first, f.second) ? 1 : 0;
-    }
+    if(!(cas.conformal_alpha(f) <= alpha))
+      continue;
+    const typename Cas::Cell_handle n = f.first->neighbor(f.second);
+    if(cas.conformal_alpha(f.first) <= alpha && cas.conformal_alpha(n) <= alpha)
+      continue;
+    ++report.number_of_candidate_facets;
+    kept += solid.is_boundary(f.first, f.second) ? 1 : 0;
   }
   report.number_of_dropped_facets = report.number_of_candidate_facets - kept;
   report.number_of_points_off_surface = internal::number_of_points_off_boundary(cas, solid);

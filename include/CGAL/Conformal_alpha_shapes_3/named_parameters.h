@@ -6,6 +6,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <type_traits>
+
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 
@@ -18,8 +20,19 @@ enum vertex_principal_curvatures_and_directions_map_t { vertex_principal_curvatu
 enum ring_size_t { ring_size };
 enum estimator_t { estimator };
 enum vertex_input_index_map_t { vertex_input_index_map };
-enum local_scale_t { local_scale };
+enum local_scale_estimator_t { local_scale_estimator };
+enum minimum_fraction_on_surface_t { minimum_fraction_on_surface };
 } // namespace internal_np_cas3
+
+namespace internal {
+
+// Whether T is a pack of named parameters, to tell overloads apart.
+template <typename T>
+struct Is_named_function_parameters : std::false_type {};
+template <typename T, typename Tag, typename Base>
+struct Is_named_function_parameters<CGAL::Named_function_parameters<T, Tag, Base> > : std::true_type {};
+
+} // namespace internal
 
 /// \ingroup PkgConformalAlphaShapes3NamedParameters
 /// Named parameters of this package. Each `name(value)` starts a pack and
@@ -49,7 +62,8 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_principal_curvatures_and_directions_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(ring_size)
 CGAL_CAS3_ADD_NAMED_PARAMETER(estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
-CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale)
+CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale_estimator)
+CGAL_CAS3_ADD_NAMED_PARAMETER(minimum_fraction_on_surface)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

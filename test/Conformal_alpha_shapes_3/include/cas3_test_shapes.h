@@ -2,6 +2,7 @@
 #ifndef CAS3_TEST_SHAPES_H
 #define CAS3_TEST_SHAPES_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <random>
@@ -68,6 +69,60 @@ std::vector<Point> torus_sample(std::size_t n, double R, double r, double noise 
     if(unit(gen) * (R + r) > R + r * std::cos(v))
       continue;
     const double rr = r * (1.0 + noise * gauss(gen));
+    pts.push_back(Point((R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u),
+                        rr * std::sin(v)));
+  }
+  return pts;
+}
+
+// Points on the ellipsoid (x/a)^2 + (y/b)^2 + (z/c)^2 = 1 whose density
+// grows by the factor `gradient` from x = -a to x = a (exponentially), with
+// relative radial noise `noise`.
+template <class Point>
+std::vector<Point> graded_ellipsoid_sample(std::size_t n, double a, double b, double c, double gradient,
+                                           double noise = 0, unsigned seed = 6)
+{
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::vector<Point> pts;
+  pts.reserve(n);
+  while(pts.size() < n)
+  {
+    double x = gauss(gen), y = gauss(gen), z = gauss(gen);
+    const double len = std::sqrt(x * x + y * y + z * z);
+    x /= len; y /= len; z /= len;
+    if(unit(gen) > std::exp(std::log(gradient) * (x - 1) / 2))
+      continue;
+    const double s = 1.0 + noise * gauss(gen);
+    pts.push_back(Point(a * x * s, b * y * s, c * z * s));
+  }
+  return pts;
+}
+
+// Points on the torus with radii R > r around the z axis, with density
+// proportional to 1 / lfs^2, lfs = min(r, distance to the axis) being the
+// local feature size: dense around the hole, sparse outside, an
+// epsilon-sample for a uniform epsilon. Relative noise `noise` (times R + r)
+// along the tube normal.
+template <class Point>
+std::vector<Point> lfs_torus_sample(std::size_t n, double R, double r, double noise = 0, unsigned seed = 4)
+{
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::vector<Point> pts;
+  pts.reserve(n);
+  const double smallest_lfs = R - r;
+  while(pts.size() < n)
+  {
+    const double u = 2 * M_PI * unit(gen), v = 2 * M_PI * unit(gen);
+    const double rho = R + r * std::cos(v);
+    const double lfs = std::min(r, rho);
+    // area element rho / (R + r), density (smallest_lfs / lfs)^2
+    if(unit(gen) > (rho / (R + r)) * (smallest_lfs / lfs) * (smallest_lfs / lfs))
+      continue;
+    const double rr = r + noise * (R + r) * gauss(gen);
     pts.push_back(Point((R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u),
                         rr * std::sin(v)));
   }

@@ -15,7 +15,8 @@ namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
 // The solid bounded by the conformal alpha shape's surface at scale `a`, as
-// a labelling of the triangulation's cells (indexed by `c->cell_index()`):
+// a labelling of the triangulation's cells (indexed by `c->cell_index()`),
+// and its boundary facets:
 //
 // 1. Outside walk. Starting from the infinite cells, a walk crosses every
 //    facet that is not in the complex at `a` (value > a). The cells it never
@@ -27,14 +28,32 @@ namespace internal {
 // 2. Manifold repair. The boundary of a union of tetrahedra is a 2-manifold
 //    exactly when, at every vertex, the solid cells of its star are connected
 //    through facets incident to the vertex, so are the other cells, and every
-//    edge has 0 or 2 boundary facets. Each vertex where this fails is
-//    mended by relabelling cells of its star, the cheapest way first:
-//    carving away all but the largest solid component, filling all but the
-//    largest outside component (infinite cells are never filled), or
-//    carving or filling the smaller runs of cells around a bad edge. Each
-//    cell may be relabelled once this way; when a mend would need a cell
-//    again, the vertex's whole solid star is carved instead. Carving only
-//    shrinks the solid, so the repair terminates.
+//    edge has 0 or 2 boundary facets. When few vertices fail this (at most
+//    1% of the boundary's: a surface that has formed), each is mended by
+//    relabelling cells of its star: carving away all but the largest solid
+//    component, filling all but the largest outside component (infinite
+//    cells are never filled), or carving or filling the smaller runs of
+//    cells around a bad edge, whichever flips fewer cells. Each cell is
+//    relabelled at most once, so the repair terminates; a vertex that would
+//    need a cell twice is left to step 4. (Below the scale at which the
+//    surface closes, the solid is a sponge of small pockets, most of whose
+//    vertices fail: relabelling would erode it cell by cell, slowly.)
+//
+// 3. Sculpting. A solid cell with a single boundary facet, whose opposite
+//    vertex is not on the boundary and whose other three facets are in the
+//    complex at `a`, is carved: the boundary then reaches that vertex through
+//    facets of the complex. This keeps the boundary's manifold vertices
+//    manifold (a facet is replaced by a fan of three around a vertex that
+//    was not on it), and brings onto the surface the points that noise put
+//    just inside it.
+//
+// 4. Splitting. The boundary facets around a vertex that is still not a
+//    manifold are grouped into umbrellas: around each edge, the two facets
+//    that bound the same wedge of solid cells are neighbours. An umbrella
+//    that passes an edge twice is no disc: the solid star of its vertex is
+//    carved, and the splitting starts again (carving only shrinks the
+//    solid, so this ends). Each umbrella is then a disc; written as a
+//    vertex of its own, the surface is a manifold.
 template <class Cas>
 class Solid_labeling
 {
@@ -42,7 +61,9 @@ public:
   typedef typename Cas::Vertex_handle Vertex_handle;
   typedef typename Cas::Cell_handle   Cell_handle;
 
-  // A boundary facet, its vertices ordered so that its normal points out of
+  // A boundary facet, as (solid cell, index of the vertex opposite to it).
+  typedef typename Cas::Facet Facet;
+  // A boundary facet's vertices, ordered so that its normal points out of
   // the solid.
   typedef std::array<Vertex_handle, 3> Triangle;
 
@@ -52,21 +73,63 @@ public:
   {
     walk_from_outside(alpha);
     collect_boundary();
-    repair();
-    sculpt(alpha);
+    std::vector<Vertex_handle> bad = non_manifold_vertices();
+    if(!bad.empty())
+    {
+      repair(bad);
+      collect_boundary();
+    }
+    if(sculpt(alpha) > 0)
+      collect_boundary();
+    if(bad.empty())
+      return;
+    // an umbrella that passes an edge twice is resolved by carving
+    for(std::vector<Vertex_handle> pinched = split(non_manifold_vertices()); !pinched.empty();
+        pinched = split(non_manifold_vertices()))
+    {
+      for(Vertex_handle v : pinched)
+        carve_star(v);
+      m_queue.clear();
+      collect_boundary();
+    }
   }
 
-  const std::vector<Triangle>& boundary() const { return m_boundary; }
+  const std::vector<Facet>& boundary() const { return m_boundary; }
+
+  static Triangle outward_triangle(const Facet& f)
+  {
+    // CGAL's vertex triple of facet i is oriented towards vertex i, into the
+    // solid cell: reversed, it points out
+    return Triangle{f.first->vertex(Cas::vertex_triple_index(f.second, 0)),
+                    f.first->vertex(Cas::vertex_triple_index(f.second, 2)),
+                    f.first->vertex(Cas::vertex_triple_index(f.second, 1))};
+  }
 
   bool is_solid(Cell_handle c) const { return m_solid[c->cell_index()] != 0; }
 
   // Whether facet (c, i) separates the solid from the outside.
   bool is_boundary(Cell_handle c, int i) const { return is_solid(c) != is_solid(c->neighbor(i)); }
 
-  // Cells relabelled by the repair: filled (outside to solid) and carved.
+  // Cells relabelled by the repair: filled (outside to solid) and carved;
+  // cells carved by sculpting.
   std::size_t number_of_filled_cells() const { return m_filled; }
   std::size_t number_of_carved_cells() const { return m_carved; }
   std::size_t number_of_sculpted_cells() const { return m_sculpted; }
+
+  // The umbrella of corner k (0, 1, 2 as in `outward_triangle()`) of
+  // boundary facet `id` around its vertex: 0 at a manifold vertex, else one
+  // of 0, 1, ... per umbrella of that vertex.
+  int umbrella(std::size_t id, int k) const
+  {
+    return m_umbrellas.empty() ? 0 : m_umbrellas[id][std::size_t(k)];
+  }
+
+  // The number of umbrellas of a boundary vertex: 1 unless the surface
+  // pinches there.
+  int number_of_umbrellas(Vertex_handle v) const
+  {
+    return m_umbrellas_at.empty() ? 1 : (std::max)(1, m_umbrellas_at[v->vertex_index()]);
+  }
 
 private:
   void walk_from_outside(double alpha)
@@ -166,18 +229,25 @@ private:
     return s.solid_components.size() <= 1 && s.outside_components.size() <= 1 && s.bad_edge_ends.empty();
   }
 
-  // Relabels the cells if none was relabelled before; false otherwise.
-  bool relabel_once(const std::vector<Cell_handle>& cells, bool solid)
+  void carve_star(Vertex_handle v)
+  {
+    std::vector<Cell_handle> cells;
+    m_cas.incident_cells(v, std::back_inserter(cells));
+    for(Cell_handle c : cells)
+      set_label(c, false);
+  }
+
+  // Relabels the cells, unless one of them was relabelled before.
+  void relabel_once(const std::vector<Cell_handle>& cells, bool solid)
   {
     for(Cell_handle c : cells)
       if(m_relabelled[c->cell_index()] || (solid && m_cas.is_infinite(c)))
-        return false;
+        return;
     for(Cell_handle c : cells)
     {
       m_relabelled[c->cell_index()] = 1;
       set_label(c, solid);
     }
-    return true;
   }
 
   void set_label(Cell_handle c, bool solid)
@@ -250,41 +320,25 @@ private:
 
   void mend(Vertex_handle v, const Star& s)
   {
-    bool done = false;
     if(s.solid_components.size() > 1)
-      done = relabel_once(all_but_largest(s, s.solid_components), false);
+      relabel_once(all_but_largest(s, s.solid_components), false);
     else if(s.outside_components.size() > 1)
-      done = relabel_once(all_but_largest(s, s.outside_components), true);
+      relabel_once(all_but_largest(s, s.outside_components), true);
     else
     {
       const auto cells_and_label = mend_edge(v, s.bad_edge_ends.front());
-      done = relabel_once(cells_and_label.first, cells_and_label.second);
+      relabel_once(cells_and_label.first, cells_and_label.second);
     }
-    if(!done)
-      for(Cell_handle c : s.cells)
-        if(is_solid(c))
-          set_label(c, false);
   }
 
   void collect_boundary()
   {
     m_boundary.clear();
     for(Cell_handle c : m_cas.finite_cell_handles())
-    {
-      if(!is_solid(c))
-        continue;
-      for(int i = 0; i < 4; ++i)
-      {
-        const Cell_handle outside = c->neighbor(i);
-        if(is_solid(outside))
-          continue;
-        // seen from the outside cell, the vertex triple's normal points into it
-        const int j = outside->index(c);
-        m_boundary.push_back(Triangle{outside->vertex(Cas::vertex_triple_index(j, 0)),
-                                      outside->vertex(Cas::vertex_triple_index(j, 1)),
-                                      outside->vertex(Cas::vertex_triple_index(j, 2))});
-      }
-    }
+      if(is_solid(c))
+        for(int i = 0; i < 4; ++i)
+          if(!is_solid(c->neighbor(i)))
+            m_boundary.push_back(Facet(c, i));
   }
 
   // The vertices where the boundary is not a manifold, found from the
@@ -294,17 +348,20 @@ private:
   {
     const std::size_t nv = m_cas.number_of_vertices();
     std::vector<std::size_t> first(nv + 1, 0);
-    for(const Triangle& t : m_boundary)
-      for(const Vertex_handle& v : t)
-        ++first[v->vertex_index() + 1];
+    for(const Facet& f : m_boundary)
+      for(int k = 1; k < 4; ++k)
+        ++first[f.first->vertex((f.second + k) & 3)->vertex_index() + 1];
     for(std::size_t k = 0; k < nv; ++k)
       first[k + 1] += first[k];
     // around each vertex v, the corners (next, previous) of its triangles
     std::vector<std::pair<Vertex_handle, Vertex_handle> > corners(first[nv]);
     std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-    for(const Triangle& t : m_boundary)
+    for(const Facet& f : m_boundary)
+    {
+      const Triangle t = outward_triangle(f);
       for(int k = 0; k < 3; ++k)
         corners[fill[t[k]->vertex_index()]++] = std::make_pair(t[(k + 1) % 3], t[(k + 2) % 3]);
+    }
 
     std::vector<Vertex_handle> bad;
     for(Vertex_handle v : m_cas.finite_vertex_handles())
@@ -330,11 +387,20 @@ private:
     return bad;
   }
 
-  void repair()
+  void repair(const std::vector<Vertex_handle>& bad)
   {
-    m_queue = non_manifold_vertices();
-    if(m_queue.empty())
+    std::size_t on_boundary = 0;
+    std::vector<char> on(m_cas.number_of_vertices(), 0);
+    for(const Facet& f : m_boundary)
+      for(int k = 1; k < 4; ++k)
+      {
+        char& mark = on[f.first->vertex((f.second + k) & 3)->vertex_index()];
+        on_boundary += mark ? 0 : 1;
+        mark = 1;
+      }
+    if(100 * bad.size() > on_boundary)
       return;
+    m_queue = bad;
     Star star;
     while(!m_queue.empty())
     {
@@ -344,27 +410,102 @@ private:
       if(!is_manifold(star))
         mend(v, star);
     }
-    collect_boundary();
   }
 
-  // A solid cell with a single boundary facet, whose opposite vertex is not
-  // on the boundary, and whose other three facets are in the complex at
-  // `alpha`, is carved: the boundary then reaches that vertex through facets
-  // of the complex, and stays a manifold (the facet is replaced by a fan of
-  // three around a vertex that was not on it).
-  void sculpt(double alpha)
+  // The boundary facet that bounds, with (c, j), the same wedge of solid
+  // cells around the edge (a, b) of facet (c, j).
+  Facet wedge_neighbour(Cell_handle c, int j, Vertex_handle a, Vertex_handle b) const
+  {
+    for(;;)
+    {
+      const int l = 6 - c->index(a) - c->index(b) - j;  // c's other facet on (a, b)
+      const Cell_handle n = c->neighbor(l);
+      if(!is_solid(n))
+        return Facet(c, l);
+      j = n->index(c);
+      c = n;
+    }
+  }
+
+  // Step 4; returns the vertices with an umbrella that is not a disc.
+  std::vector<Vertex_handle> split(const std::vector<Vertex_handle>& bad)
+  {
+    m_umbrellas.clear();
+    m_umbrellas_at.clear();
+    if(bad.empty())
+      return bad;
+    m_umbrellas_at.assign(m_cas.number_of_vertices(), 0);
+    for(Vertex_handle v : bad)
+      m_umbrellas_at[v->vertex_index()] = -1;  // not counted yet
+    auto is_bad = [&](Vertex_handle v) { return m_umbrellas_at[v->vertex_index()] != 0; };
+    // the boundary facets of a cell are consecutive in m_boundary, by index
+    for(std::size_t id = m_boundary.size(); id-- > 0;)
+      m_star_position[m_boundary[id].first->cell_index()] = int(id);
+    auto id_of = [&](const Facet& f) {
+      std::size_t id = std::size_t(m_star_position[f.first->cell_index()]);
+      while(m_boundary[id].second != f.second)
+        ++id;
+      return id;
+    };
+    m_umbrellas.assign(m_boundary.size(), std::array<int, 3>{{0, 0, 0}});
+    for(std::size_t id = 0; id < m_boundary.size(); ++id)
+    {
+      const Triangle t = outward_triangle(m_boundary[id]);
+      for(std::size_t k = 0; k < 3; ++k)
+        if(is_bad(t[k]))
+          m_umbrellas[id][k] = -1;
+    }
+    for(Vertex_handle v : bad)
+      m_umbrellas_at[v->vertex_index()] = 0;
+    std::vector<std::pair<std::size_t, int> > corners;
+    std::vector<Vertex_handle> next;
+    std::vector<Vertex_handle> pinched_edges;
+    for(std::size_t start = 0; start < m_boundary.size(); ++start)
+      for(int k0 = 0; k0 < 3; ++k0)
+      {
+        if(m_umbrellas[start][std::size_t(k0)] >= 0)
+          continue;
+        const Vertex_handle v = outward_triangle(m_boundary[start])[std::size_t(k0)];
+        // turn around v: across the edge (v, next vertex) to the wedge
+        // neighbour, until back; corner i goes from x[i-1] to x[i] in v's link
+        corners.clear();
+        next.clear();
+        std::size_t id = start;
+        int k = k0;
+        do
+        {
+          const Facet& f = m_boundary[id];
+          corners.emplace_back(id, k);
+          next.push_back(outward_triangle(f)[std::size_t((k + 1) % 3)]);
+          const Facet g = wedge_neighbour(f.first, f.second, v, next.back());
+          id = id_of(g);
+          const Triangle t = outward_triangle(g);
+          k = int(std::find(t.begin(), t.end(), v) - t.begin());
+        } while(id != start || k != k0);
+        // the walk may pass a link vertex twice (two wedges of a bad edge in
+        // one umbrella): then the umbrella is no disc
+        std::sort(next.begin(), next.end());
+        if(std::adjacent_find(next.begin(), next.end()) != next.end())
+          pinched_edges.push_back(v);
+        const int umbrella = m_umbrellas_at[v->vertex_index()]++;
+        for(const auto& corner : corners)
+          m_umbrellas[corner.first][std::size_t(corner.second)] = umbrella;
+      }
+    for(const Facet& f : m_boundary)
+      m_star_position[f.first->cell_index()] = -1;
+    return pinched_edges;
+  }
+
+  // Step 3; returns the number of cells carved.
+  std::size_t sculpt(double alpha)
   {
     std::vector<int> degree(m_cas.number_of_vertices(), 0);  // boundary facets per vertex
-    for(const Triangle& t : m_boundary)
-      for(const Vertex_handle& v : t)
-        ++degree[v->vertex_index()];
     std::vector<Cell_handle> stack;
-    for(const Triangle& t : m_boundary)
+    for(const Facet& f : m_boundary)
     {
-      Cell_handle c;
-      int i = 0, j = 0, k = 0;
-      m_cas.is_facet(t[0], t[1], t[2], c, i, j, k);
-      stack.push_back(is_solid(c) ? c : c->neighbor(6 - i - j - k));
+      for(int k = 1; k < 4; ++k)
+        ++degree[f.first->vertex((f.second + k) & 3)->vertex_index()];
+      stack.push_back(f.first);
     }
     std::size_t sculpted = 0;
     while(!stack.empty())
@@ -396,15 +537,16 @@ private:
           stack.push_back(c->neighbor(i));
     }
     m_sculpted = sculpted;
-    if(sculpted > 0)
-      collect_boundary();
+    return sculpted;
   }
 
   const Cas& m_cas;
   std::vector<unsigned char> m_solid;       // per cell index
   std::vector<unsigned char> m_relabelled;  // per cell index
   std::vector<int> m_star_position;         // per cell index: its place in the star analysed, or -1
-  std::vector<Triangle> m_boundary;
+  std::vector<Facet> m_boundary;
+  std::vector<std::array<int, 3> > m_umbrellas;  // by boundary facet id; empty when all are 0
+  std::vector<int> m_umbrellas_at;               // by vertex index; empty when all are 1
   std::vector<Vertex_handle> m_queue;
   std::size_t m_filled = 0, m_carved = 0, m_sculpted = 0;
 };
