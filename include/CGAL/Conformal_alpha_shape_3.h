@@ -41,7 +41,8 @@ enum Local_scale_estimator
   /// for points displaced inwards, once the noise exceeds the local sagitta.
   PAPER_POLE_DISTANCE,
   /// The distance to the pole, but at least 4 times the local sample
-  /// spacing (the length of the vertex's 6th shortest Delaunay edge): a
+  /// spacing (the length of the vertex's 3rd shortest Delaunay edge: on a
+  /// surface, a vertex has at least 3 neighbours at about the spacing): a
   /// sample cannot resolve features much smaller than its spacing, and the
   /// collapsed pole distances of noisy points are exactly such features.
   /// Identical to `PAPER_POLE_DISTANCE` on dense noiseless samples. The default.
@@ -187,7 +188,7 @@ public:
     }
     if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
     {
-      const std::vector<double> spacing = CAS3::internal::kth_shortest_edge_lengths<6>(*this);
+      const std::vector<double> spacing = CAS3::internal::kth_shortest_edge_lengths<3>(*this);
       for(Vertex_handle v : this->finite_vertex_handles())
         v->set_local_scale((std::max)(v->local_scale(), 4 * spacing[v->vertex_index()]));
     }
