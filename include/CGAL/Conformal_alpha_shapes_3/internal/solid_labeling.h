@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -49,11 +50,12 @@ namespace internal {
 //
 // 4. Splitting. The boundary facets around a vertex that is still not a
 //    manifold are grouped into umbrellas: around each edge, the two facets
-//    that bound the same wedge of solid cells are neighbours. An umbrella
-//    that passes an edge twice is no disc: the solid star of its vertex is
-//    carved, and the splitting starts again (carving only shrinks the
-//    solid, so this ends). Each umbrella is then a disc; written as a
-//    vertex of its own, the surface is a manifold.
+//    that bound the same wedge of solid cells are neighbours. Each umbrella
+//    becomes a vertex of its own. An umbrella may pass an edge twice (both
+//    wedges of a bad edge); when the umbrella at the edge's other end does
+//    too, the two copies would share four faces: the solid star of that
+//    vertex is carved, and the splitting starts again (carving only shrinks
+//    the solid, so this ends). The surface is then a manifold.
 template <class Cas>
 class Solid_labeling
 {
@@ -427,7 +429,8 @@ private:
     }
   }
 
-  // Step 4; returns the vertices with an umbrella that is not a disc.
+  // Step 4; returns the vertices of the edges that umbrellas pass twice at
+  // both ends.
   std::vector<Vertex_handle> split(const std::vector<Vertex_handle>& bad)
   {
     m_umbrellas.clear();
@@ -458,8 +461,6 @@ private:
     for(Vertex_handle v : bad)
       m_umbrellas_at[v->vertex_index()] = 0;
     std::vector<std::pair<std::size_t, int> > corners;
-    std::vector<Vertex_handle> next;
-    std::vector<Vertex_handle> pinched_edges;
     for(std::size_t start = 0; start < m_boundary.size(); ++start)
       for(int k0 = 0; k0 < 3; ++k0)
       {
@@ -467,33 +468,45 @@ private:
           continue;
         const Vertex_handle v = outward_triangle(m_boundary[start])[std::size_t(k0)];
         // turn around v: across the edge (v, next vertex) to the wedge
-        // neighbour, until back; corner i goes from x[i-1] to x[i] in v's link
+        // neighbour, until back
         corners.clear();
-        next.clear();
         std::size_t id = start;
         int k = k0;
         do
         {
           const Facet& f = m_boundary[id];
           corners.emplace_back(id, k);
-          next.push_back(outward_triangle(f)[std::size_t((k + 1) % 3)]);
-          const Facet g = wedge_neighbour(f.first, f.second, v, next.back());
+          const Vertex_handle next = outward_triangle(f)[std::size_t((k + 1) % 3)];
+          const Facet g = wedge_neighbour(f.first, f.second, v, next);
           id = id_of(g);
           const Triangle t = outward_triangle(g);
           k = int(std::find(t.begin(), t.end(), v) - t.begin());
         } while(id != start || k != k0);
-        // the walk may pass a link vertex twice (two wedges of a bad edge in
-        // one umbrella): then the umbrella is no disc
-        std::sort(next.begin(), next.end());
-        if(std::adjacent_find(next.begin(), next.end()) != next.end())
-          pinched_edges.push_back(v);
         const int umbrella = m_umbrellas_at[v->vertex_index()]++;
         for(const auto& corner : corners)
           m_umbrellas[corner.first][std::size_t(corner.second)] = umbrella;
       }
     for(const Facet& f : m_boundary)
       m_star_position[f.first->cell_index()] = -1;
-    return pinched_edges;
+
+    // an umbrella may pass an edge twice (both wedges of a bad edge): that
+    // is harmless unless the umbrella at the edge's other end does too, and
+    // the edge between the two copies then has four faces
+    typedef std::tuple<Vertex_handle, int, Vertex_handle, int> Copy_edge;  // (vertex, umbrella) twice
+    std::vector<Copy_edge> copy_edges;
+    for(std::size_t id = 0; id < m_boundary.size(); ++id)
+    {
+      const Triangle t = outward_triangle(m_boundary[id]);
+      for(std::size_t k = 0; k < 3; ++k)
+        if(is_bad(t[k]) && is_bad(t[(k + 1) % 3]))
+          copy_edges.emplace_back(t[k], m_umbrellas[id][k], t[(k + 1) % 3], m_umbrellas[id][(k + 1) % 3]);
+    }
+    std::sort(copy_edges.begin(), copy_edges.end());
+    std::vector<Vertex_handle> doubled_edge_ends;
+    for(std::size_t k = 1; k < copy_edges.size(); ++k)
+      if(copy_edges[k] == copy_edges[k - 1])
+        doubled_edge_ends.push_back(std::get<0>(copy_edges[k]));
+    return doubled_edge_ends;
   }
 
   // Step 3; returns the number of cells carved.
