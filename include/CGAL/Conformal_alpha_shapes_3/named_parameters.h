@@ -22,6 +22,8 @@ enum estimator_t { estimator };
 enum vertex_input_index_map_t { vertex_input_index_map };
 enum local_scale_estimator_t { local_scale_estimator };
 enum minimum_fraction_on_surface_t { minimum_fraction_on_surface };
+enum scales_t { scales };
+enum ring_sizes_t { ring_sizes };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -64,6 +66,8 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale_estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(minimum_fraction_on_surface)
+CGAL_CAS3_ADD_NAMED_PARAMETER(scales)
+CGAL_CAS3_ADD_NAMED_PARAMETER(ring_sizes)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

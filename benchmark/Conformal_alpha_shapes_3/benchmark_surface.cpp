@@ -1,0 +1,101 @@
+// Time of suggest_alpha and extract_boundary_surface against the Delaunay
+// build of the same points, and the share of the points on the surface.
+//   benchmark_surface [--sizes 100000,1000000] [FILE...]
+// Without FILE: noisy ellipsoids (0.01% and 0.1% radial noise) of the given
+// sizes and the bundled bunny. FILE: any point file CGAL reads.
+#include <CGAL/Conformal_alpha_shape_3.h>
+#include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/read_points.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "cas3_benchmark.h"
+#include "cas3_test_shapes.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Triangulation_data_structure_3<CGAL::Conformal_alpha_shape_vertex_base_3<K>,
+                                             CGAL::Conformal_alpha_shape_cell_base_3<K> > Tds;
+typedef CGAL::Conformal_alpha_shape_3<CGAL::Delaunay_triangulation_3<K, Tds> > Cas;
+typedef CGAL::Surface_mesh<Point> Mesh;
+namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+
+void run(const std::string& name, const std::vector<Point>& pts)
+{
+  double dt_seconds = 0;
+  {
+    cas3_benchmark::Phase phase;
+    CGAL::Delaunay_triangulation_3<K> dt(pts.begin(), pts.end());
+    dt_seconds = phase.seconds();
+  }
+  cas3_benchmark::Phase build;
+  const Cas cas(pts.begin(), pts.end());
+  const double build_seconds = build.seconds();
+  cas3_benchmark::Phase search;
+  const double suggested = CAS3::suggest_alpha(cas);
+  const double search_seconds = search.seconds();
+  std::printf("%s: %zu points, Delaunay %.3f s, conformal shape %.3f s (%.2fx), suggest_alpha %.3f s (%.2fx)\n",
+              name.c_str(), pts.size(), dt_seconds, build_seconds, build_seconds / dt_seconds, search_seconds,
+              search_seconds / dt_seconds);
+  std::printf("  %-10s %12s %10s %10s %9s %9s %8s\n", "scale", "a", "extract s", "x Delaunay", "faces",
+              "on surf.", "pinched");
+  struct Scale { std::string label; double alpha; };
+  std::vector<Scale> scales = {{"suggested", suggested}};
+  for(double q : {0.10, 0.25, 0.35, 0.50})
+    scales.push_back({std::to_string(int(100 * q + 0.5)) + "%", cas.alpha_at_quantile(q)});
+  for(const Scale& s : scales)
+  {
+    Mesh mesh;
+    cas3_benchmark::Phase extract;
+    const CAS3::Boundary_surface_report r = CAS3::extract_boundary_surface(cas, s.alpha, mesh);
+    const double seconds = extract.seconds();
+    std::printf("  %-10s %12.5g %10.3f %10.2f %9zu %8.2f%% %8zu\n", s.label.c_str(), s.alpha, seconds,
+                seconds / dt_seconds, r.number_of_faces, 100 * r.fraction_of_points_on_surface(),
+                r.number_of_pinched_vertices);
+  }
+  std::fflush(stdout);
+}
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::size_t> sizes = {100000, 1000000};
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if(arg == "--sizes" && i + 1 < argc)
+    {
+      sizes.clear();
+      std::stringstream list(argv[++i]);
+      std::string item;
+      while(std::getline(list, item, ',')) sizes.push_back(std::stoul(item));
+    }
+    else files.push_back(arg);
+  }
+  if(files.empty()) files.push_back(CGAL_CAS3_DEFAULT_INPUT);
+  for(std::size_t n : sizes)
+    for(double noise : {1e-4, 1e-3})
+      run("ellipsoid 1:0.7:0.4, " + std::to_string(noise * 100).substr(0, 4) + "% noise",
+          cas3_test::ellipsoid_sample<Point>(n, 1, 0.7, 0.4, noise));
+  for(const std::string& f : files)
+  {
+    std::vector<Point> pts;
+    if(!CGAL::IO::read_points(f, std::back_inserter(pts)) || pts.empty())
+    {
+      std::cerr << "cannot read " << f << "\n";
+      return EXIT_FAILURE;
+    }
+    run(f.substr(f.find_last_of('/') + 1), pts);
+  }
+  return EXIT_SUCCESS;
+}
