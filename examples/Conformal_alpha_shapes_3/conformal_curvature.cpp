@@ -76,7 +76,7 @@ std::vector<std::string> split_list(const std::string& list)
   std::string item;
   while(std::getline(in, item, ','))
     items.push_back(item);
-  if(items.empty() || list.back() == ',')
+  if(items.empty() || list.back() == ',' || std::find(items.begin(), items.end(), "") != items.end())
     throw Failure("empty item in the list '" + list + "'");
   return items;
 }
@@ -145,19 +145,28 @@ std::vector<Point> read_input(const std::string& file)
     throw Failure("cannot open " + file);
   std::string ext = fs::path(file).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(ext != ".xyz" && ext != ".pwn" && ext != ".ply" && ext != ".off" && ext != ".obj")
+    throw Failure("unknown input extension '" + ext + "' (.xyz, .pwn, .ply, .off, .obj)");
+  // CGAL's readers explain a failure on std::cerr: keep it for our one line
+  std::ostringstream reader_messages;
+  std::streambuf* const cerr_buffer = std::cerr.rdbuf(reader_messages.rdbuf());
   std::vector<Point> points;
   bool ok = false;
-  if(ext == ".xyz" || ext == ".pwn" || ext == ".ply" || ext == ".off")
-    ok = CGAL::IO::read_points(file, std::back_inserter(points));
-  else if(ext == ".obj")
+  if(ext == ".obj")
   {
     std::vector<std::vector<std::size_t> > faces;
     ok = CGAL::IO::read_OBJ(file, points, faces);
   }
   else
-    throw Failure("unknown input extension '" + ext + "' (.xyz, .pwn, .ply, .off, .obj)");
+    ok = CGAL::IO::read_points(file, std::back_inserter(points));
+  std::cerr.rdbuf(cerr_buffer);
   if(!ok)
-    throw Failure("cannot read " + file + ": not a valid " + ext.substr(1) + " file");
+  {
+    std::string why = reader_messages.str();
+    why = why.substr(0, why.find('\n'));
+    throw Failure("cannot read " + file + ": not a valid " + ext.substr(1) + " file" +
+                  (why.empty() ? std::string() : " (" + why + ")"));
+  }
   if(points.empty())
     throw Failure(file + " holds no point");
   return points;

@@ -84,8 +84,8 @@ private:
 \ingroup PkgConformalAlphaShapes3Multiscale
 The curvature of the surface at one input point, at one scale and ring size;
 `on_surface` is `false`, and every number NaN, where the point is not on
-that surface. Where the point is on it but its curvature is undefined (see
-`estimate_vertex_curvatures()`), `on_surface` is `true` and the numbers NaN.
+that surface, or is on it where its curvature is undefined (see
+`estimate_vertex_curvatures()`: a vertex of a pocket too small for the fit).
 */
 template <class Kernel>
 struct Point_curvature
@@ -182,7 +182,7 @@ public:
     auto d2 = surface.template add_property_map<Surface_vertex, Vector>("v:d2").first;
     auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
 
-    // by vertex of the shape: at a pinch, the first umbrella's estimate
+    // by vertex of the shape: at a pinch, the first umbrella's defined estimate
     const std::size_t none = std::size_t(-1);
     std::vector<std::size_t> record_of_vertex(m_shape.number_of_vertices(), none);
     std::vector<Point_curvature<Kernel> > records;
@@ -195,7 +195,7 @@ public:
       d1[v] = p.max_direction;
       d2[v] = p.min_direction;
       std::size_t& r = record_of_vertex[m_shape.input_vertex(input_index[v])->vertex_index()];
-      if(r != none)
+      if(r != none || !std::isfinite(p.max_curvature))
         continue;
       r = records.size();
       Point_curvature<Kernel> record;
