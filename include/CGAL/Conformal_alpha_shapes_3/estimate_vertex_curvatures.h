@@ -134,11 +134,19 @@ void collect_rings(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
 // The estimate at one vertex; `normal_of(u)` gives a vertex's Chen-Wu normal.
 // A k-ring too small or too degenerate for the fit is widened by up to two
 // rings before the vertex is given up (NaN curvature).
+// Buffers reused from vertex to vertex.
+template <typename PolygonMesh>
+struct Ring_buffers
+{
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> ring;
+  std::vector<Neighbour> neighbours;
+};
+
 template <typename PolygonMesh, typename VPM, typename Normal_of, typename Mark_factory>
 bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                         const PolygonMesh& pmesh, const VPM& vpm, int rings,
                         Curvature_estimator estimator, Normal_of normal_of,
-                        Mark_factory new_mark, Local_curvature& out)
+                        Mark_factory new_mark, Ring_buffers<PolygonMesh>& buffers, Local_curvature& out)
 {
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -147,8 +155,8 @@ bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descri
     return false;
 
   const Vec3 p = to_vec3(get(vpm, v));
-  std::vector<vertex_descriptor> ring;
-  std::vector<Neighbour> nbrs;
+  std::vector<vertex_descriptor>& ring = buffers.ring;
+  std::vector<Neighbour>& nbrs = buffers.neighbours;
   for(int k = rings; k <= rings + 2; ++k)
   {
     collect_rings(v, pmesh, k, new_mark(), ring);
@@ -364,10 +372,12 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
 
   std::size_t undefined = 0;
   internal::Local_curvature c;
+  internal::Ring_buffers<PolygonMesh> buffers;
   for(vertex_descriptor v : vertices(pmesh))
   {
     if(!internal::estimate_at_vertex(v, pmesh, vpm, rings, estimator,
-                                     [&](vertex_descriptor u) { return normals[get(vertex_index, u)]; }, new_mark, c))
+                                     [&](vertex_descriptor u) { return normals[get(vertex_index, u)]; }, new_mark,
+                                     buffers, c))
       ++undefined;
     maps.write(v, c);
   }
@@ -400,8 +410,10 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
     return [&marked](vertex_descriptor u) { return marked.insert(u).second; };
   };
   internal::Local_curvature c;
+  internal::Ring_buffers<PolygonMesh> buffers;
   const bool ok = internal::estimate_at_vertex(v, pmesh, vpm, internal::get_ring_size(np),
-                                               internal::get_estimator<PolygonMesh>(np), normal_of, new_mark, c);
+                                               internal::get_estimator<PolygonMesh>(np), normal_of, new_mark,
+                                               buffers, c);
   maps.write(v, c);
   return ok;
 }

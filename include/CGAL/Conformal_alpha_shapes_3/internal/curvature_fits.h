@@ -177,24 +177,28 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local
     return false;
   reach /= h;
 
-  Eigen::MatrixXd design(nbrs.size() + 1, 6);
-  Eigen::VectorXd z(nbrs.size() + 1);
-  design.row(0) << 0, 0, 0, 0, 0, 1;
-  z(0) = 0;
-  for(std::size_t i = 0; i < nbrs.size(); ++i)
+  // weighted least squares by its normal equations, in fixed-size storage:
+  // the vertex itself (x = y = 0, z = 0) and each neighbour give a row
+  typedef Eigen::Matrix<double, 6, 1> Vector6;
+  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  Vector6 rhs = Vector6::Zero();
+  normal_matrix(5, 5) = 1;
+  for(const Neighbour& q : nbrs)
   {
-    const Vec3 o = nbrs[i].offset / h;  // unit-free coordinates condition the fit
+    const Vec3 o = q.offset / h;  // unit-free coordinates condition the fit
     const double x = o.dot(f.e1), y = o.dot(f.e2);
     const double t = o.squaredNorm() / (2.25 * reach * reach);
     const double w = (1 - t) * (1 - t);  // fades to 0 at 1.5 times the ring's reach
-    design.row(Eigen::Index(i + 1)) << w * x * x, w * x * y, w * y * y, w * x, w * y, w;
-    z(Eigen::Index(i + 1)) = w * o.dot(f.n);
+    Vector6 row;
+    row << x * x, x * y, y * y, x, y, 1;
+    normal_matrix.noalias() += (w * w) * row * row.transpose();
+    rhs.noalias() += (w * w * o.dot(f.n)) * row;
   }
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
-  qr.setThreshold(1e-8);
-  if(qr.rank() < 6)
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6> > ldlt(normal_matrix);
+  const auto pivots = ldlt.vectorD();
+  if(ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
     return false;
-  const Eigen::VectorXd coef = qr.solve(z);
+  const Vector6 coef = ldlt.solve(rhs);
   const double A = coef(0) / h, B = coef(1) / h, C = coef(2) / h, D = coef(3), E = coef(4);
 
   // first and second fundamental forms of (x, y, z(x, y)) at the origin,
