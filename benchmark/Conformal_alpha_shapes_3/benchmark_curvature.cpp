@@ -181,10 +181,10 @@ int main(int argc, char* argv[])
     for(Surface& s : surfaces)
     {
       if(noisy) { add_noise(s, 0.1); s.name += " +noise"; }
-      for(int rings = 1; rings <= 5; ++rings)
+      for(int rings = 1; rings <= 7; ++rings)
         for(CAS3::Curvature_estimator e : {CAS3::PAPER_EULER_FIT, CAS3::EULER_LEAST_SQUARES_FIT, CAS3::QUADRIC_FIT})
           print(s.name.c_str(), names[e], rings, ours(s, rings, e));
-      for(int rings = 2; rings <= 5; ++rings)
+      for(int rings = 2; rings <= 7; ++rings)
         for(int degree : {2, 3})
           print(s.name.c_str(), degree == 2 ? "jet fitting, degree 2" : "jet fitting, degree 3", rings,
                 jet(s, rings, degree));
