@@ -1,0 +1,10 @@
+# Runs doxygen on the configured Doxyfile in DOC_DIR and fails on any warning.
+file(REMOVE ${DOC_DIR}/warnings.log)
+execute_process(COMMAND ${DOXYGEN} ${DOC_DIR}/Doxyfile WORKING_DIRECTORY ${DOC_DIR} RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "doxygen failed")
+endif()
+file(READ ${DOC_DIR}/warnings.log warnings)
+if(NOT warnings STREQUAL "")
+  message(FATAL_ERROR "doxygen warnings:\n${warnings}")
+endif()
