@@ -11,7 +11,6 @@
 #include <CGAL/Alpha_shape_vertex_base_3.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/read_points.h>
 
 #include "cas3_benchmark.h"
 #include "cas3_test_shapes.h"
@@ -19,7 +18,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -75,38 +73,14 @@ void run(const std::string& name, const std::vector<Point>& pts, bool with_alpha
 
 int main(int argc, char* argv[])
 {
-  std::vector<std::size_t> sizes = {100000, 1000000};
-  std::vector<std::string> files;
-  bool with_alpha_shape = true;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--sizes" && i + 1 < argc)
-    {
-      sizes.clear();
-      std::stringstream list(argv[++i]);
-      std::string item;
-      while(std::getline(list, item, ',')) sizes.push_back(std::stoul(item));
-    }
-    else if(arg == "--no-alpha-shape") with_alpha_shape = false;
-    else files.push_back(arg);
-  }
-  if(files.empty()) files.push_back(CGAL_CAS3_DEFAULT_INPUT);
-
+  const cas3_benchmark::Arguments args = cas3_benchmark::parse_arguments(argc, argv);
+  const bool with_alpha_shape = !args.has("--no-alpha-shape");
   std::cout << "ratios are against the Delaunay build alone; memory is the peak resident memory\n"
                "each phase adds; '+spectrum' builds the shape and its sorted spectrum\n";
-  for(std::size_t n : sizes)
+  for(std::size_t n : args.sizes)
     run("ellipsoid 1:0.7:0.4, 0.1% noise", cas3_test::ellipsoid_sample<Point>(n, 1, 0.7, 0.4, 0.001),
         with_alpha_shape);
-  for(const std::string& f : files)
-  {
-    std::vector<Point> pts;
-    if(!CGAL::IO::read_points(f, std::back_inserter(pts)) || pts.empty())
-    {
-      std::cerr << "cannot read " << f << "\n";
-      return EXIT_FAILURE;
-    }
-    run(f.substr(f.find_last_of('/') + 1), pts, with_alpha_shape);
-  }
-  return EXIT_SUCCESS;
+  return cas3_benchmark::for_each_point_file<Point>(args.files, [&](const std::string& name, const std::vector<Point>& pts) {
+    run(name, pts, with_alpha_shape);
+  }) ? EXIT_SUCCESS : EXIT_FAILURE;
 }

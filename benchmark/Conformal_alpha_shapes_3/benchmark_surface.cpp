@@ -9,7 +9,6 @@
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/read_points.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "cas3_benchmark.h"
@@ -18,7 +17,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -68,34 +66,10 @@ void run(const std::string& name, const std::vector<Point>& pts)
 
 int main(int argc, char* argv[])
 {
-  std::vector<std::size_t> sizes = {100000, 1000000};
-  std::vector<std::string> files;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--sizes" && i + 1 < argc)
-    {
-      sizes.clear();
-      std::stringstream list(argv[++i]);
-      std::string item;
-      while(std::getline(list, item, ',')) sizes.push_back(std::stoul(item));
-    }
-    else files.push_back(arg);
-  }
-  if(files.empty()) files.push_back(CGAL_CAS3_DEFAULT_INPUT);
-  for(std::size_t n : sizes)
+  const cas3_benchmark::Arguments args = cas3_benchmark::parse_arguments(argc, argv);
+  for(std::size_t n : args.sizes)
     for(double noise : {1e-4, 1e-3})
       run("ellipsoid 1:0.7:0.4, " + std::to_string(noise * 100).substr(0, 4) + "% noise",
           cas3_test::ellipsoid_sample<Point>(n, 1, 0.7, 0.4, noise));
-  for(const std::string& f : files)
-  {
-    std::vector<Point> pts;
-    if(!CGAL::IO::read_points(f, std::back_inserter(pts)) || pts.empty())
-    {
-      std::cerr << "cannot read " << f << "\n";
-      return EXIT_FAILURE;
-    }
-    run(f.substr(f.find_last_of('/') + 1), pts);
-  }
-  return EXIT_SUCCESS;
+  return cas3_benchmark::for_each_point_file<Point>(args.files, run) ? EXIT_SUCCESS : EXIT_FAILURE;
 }
