@@ -105,6 +105,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mes
     {"torus", cas3_test::torus_sample<Point>(20000, R, r), 0, torus_volume},
     {"ellipsoid, 30x density gradient", cas3_test::graded_ellipsoid_sample<Point>(20000, a, b, c, 30), 2,
      ellipsoid_volume},
+    {"torus, 30x density gradient", cas3_test::torus_sample<Point>(20000, R, r, 0, 2, 30), 0, torus_volume},
   };
   for(const Case& k : cases)
   {

@@ -52,10 +52,13 @@ std::vector<Point> ellipsoid_sample(std::size_t n, double a, double b, double c,
   return pts;
 }
 
-// Points on the torus with radii R > r around the z axis, uniform in area,
-// with relative normal noise `noise` (times r) along the tube normal.
+// Points on the torus with radii R > r around the z axis, uniform in area
+// times a density that grows by the factor `gradient` from x = -(R + r) to
+// x = R + r (exponentially), with relative normal noise `noise` (times r)
+// along the tube normal.
 template <class Point>
-std::vector<Point> torus_sample(std::size_t n, double R, double r, double noise = 0, unsigned seed = 2)
+std::vector<Point> torus_sample(std::size_t n, double R, double r, double noise = 0, unsigned seed = 2,
+                                double gradient = 1)
 {
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -67,6 +70,9 @@ std::vector<Point> torus_sample(std::size_t n, double R, double r, double noise 
     const double u = 2 * M_PI * unit(gen), v = 2 * M_PI * unit(gen);
     // rejection sampling of v makes the density uniform in area
     if(unit(gen) * (R + r) > R + r * std::cos(v))
+      continue;
+    const double x = (R + r * std::cos(v)) * std::cos(u) / (R + r);
+    if(unit(gen) > std::exp(std::log(gradient) * (x - 1) / 2))
       continue;
     const double rr = r * (1.0 + noise * gauss(gen));
     pts.push_back(Point((R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u),

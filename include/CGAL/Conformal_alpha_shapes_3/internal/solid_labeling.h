@@ -79,20 +79,25 @@ public:
     if(!bad.empty())
     {
       repair(bad);
-      collect_boundary();
+      if(m_filled + m_carved > 0)
+      {
+        collect_boundary();
+        bad = non_manifold_vertices();
+      }
     }
+    // sculpting neither mends nor breaks a vertex: `bad` stays exact
     if(sculpt(alpha) > 0)
       collect_boundary();
     if(bad.empty())
       return;
     // an umbrella that passes an edge twice is resolved by carving
-    for(std::vector<Vertex_handle> pinched = split(non_manifold_vertices()); !pinched.empty();
-        pinched = split(non_manifold_vertices()))
+    for(std::vector<Vertex_handle> pinched = split(bad); !pinched.empty(); pinched = split(bad))
     {
       for(Vertex_handle v : pinched)
         carve_star(v);
       m_queue.clear();
       collect_boundary();
+      bad = non_manifold_vertices();
     }
   }
 
