@@ -87,14 +87,19 @@ a walk from the infinite cells crosses every facet that is not in the
 complex at `alpha`, and the cells it never reaches (the `INTERIOR` cells and
 whatever the candidate facets enclose) form the solid. Candidate facets
 that do not separate the solid from the walked space (dangling sheets,
-facets inside the volume) are dropped. Non-manifold vertices and edges of
-the solid's boundary are then mended by moving a few cells of their star
-into or out of the solid (the cheapest of the two, each cell at most once;
-failing that, the whole solid star of the vertex is carved away). The
-result is therefore always a closed 2-manifold, possibly with several
-components; where the data has a hole wider than the scale, the walk enters
-the volume and that part of the surface is missing (it is not bridged by a
-surface with border).
+facets inside the volume) are dropped. When few vertices of the solid's
+boundary are not manifold, each is mended by moving a few cells of its star
+into or out of the solid (the cheapest of the two, each cell at most once).
+Solid cells with a single boundary facet whose opposite vertex is off the
+surface, and whose other facets are in the complex, are then removed, which
+brings onto the surface the points that noise put just inside it. Where the
+surface still pinches, each umbrella of faces around the vertex gets a
+vertex of its own (`number_of_pinched_vertices`). The result is therefore
+always a closed 2-manifold, possibly with several components (small pockets
+below the scale at which the surface closes); where the data has a hole
+wider than the scale, the walk enters the volume and that part of the
+surface is missing (it is not bridged by a surface with border). The manual
+details each step and its measured effect.
 
 Faces and vertices are added to `pmesh`, which is usually empty. When `alpha`
 is below every facet value, or when the candidate facets enclose nothing,
@@ -116,7 +121,7 @@ nothing is added and the report says so.
     \cgalParamDefault{`boost::get(CGAL::vertex_point, pmesh)`}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_input_index_map}
-    \cgalParamDescription{output: for each vertex added to `pmesh`, the index of its input point (the smallest one when duplicates collapsed into the vertex)}
+    \cgalParamDescription{output: for each vertex added to `pmesh`, the index of its input point (the smallest one when duplicates collapsed into the vertex; the same for the copies of a pinched vertex)}
     \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
     \cgalParamDefault{not written}
   \cgalParamNEnd
