@@ -376,11 +376,7 @@ int main(int argc, char* argv[])
     }
     return run(options);
   }
-  catch(const Failure& e)
-  {
-    std::cerr << "conformal_curvature: " << e.what() << "\n";
-  }
-  catch(const std::exception& e)
+  catch(const std::exception& e)  // a Failure, or a library error
   {
     std::cerr << "conformal_curvature: " << e.what() << "\n";
   }

@@ -57,8 +57,8 @@ enum Local_scale_estimator
 The conformal alpha shape filtration of a 3D point set (Cazals, Giesen, Pauly
 and Zomorodian, 2005), built on its Delaunay triangulation.
 
-Every vertex `p` carries a local scale `alpha_p+` (by default the distance to
-its pole, see `local_scale()`). A finite simplex `s` with ordinary alpha value
+Every vertex `p` carries a local scale `alpha_p+` (by default derived from the
+distance to its pole, see `local_scale()`). A finite simplex `s` with ordinary alpha value
 `alpha(s)` (the radius, not squared, of its smallest empty circumscribing
 ball, attached to its cofaces when that ball is not empty) gets the conformal
 value `a(s) = alpha(s) / min_{p in s} alpha_p+`; vertices get 0. The conformal
@@ -270,10 +270,12 @@ public:
       c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
   }
 
-  /// The local scale `alpha_p+` of `v`: its distance to `pole(v)`, unless
-  /// scales were supplied. It estimates the local feature size; under radial
-  /// noise above the local sagitta (about spacing^2 / (8R)) it collapses for
-  /// points displaced inwards (see the manual).
+  /// The local scale `alpha_p+` of `v`, an estimate of the local feature
+  /// size: its distance to `pole(v)`, floored at 4 sample spacings by
+  /// default (see `Conformal_alpha_shapes_3::Local_scale_estimator`: under
+  /// radial noise above the local sagitta, about spacing^2 / (8R), the bare
+  /// pole distance collapses for points displaced inwards), or the scale
+  /// supplied by the caller.
   FT local_scale(Vertex_handle v) const { return v->local_scale(); }
   /// @}
 
