@@ -37,7 +37,8 @@ namespace {
 
 const char* const usage =
   "usage: conformal_curvature [INPUT] [--alpha LIST] [--rings LIST] [--estimator NAME]\n"
-  "                           [--output DIR] [--quiet] [--help]\n"
+  "                           [--denoise MODE] [--denoise-neighbors K]\n"
+  "                           [--extraction NAME] [--output DIR] [--quiet] [--help]\n"
   "\n"
   "Multi-scale curvature of a point cloud on its conformal alpha shape.\n"
   "  INPUT            .xyz, .pwn, .ply, .off or .obj (meshes: their vertices);\n"
@@ -46,6 +47,11 @@ const char* const usage =
   "                   values (25%) and/or auto; default 10%,25%,35%,50%\n"
   "  --rings LIST     comma list of ring sizes >= 1; default 1,2\n"
   "  --estimator NAME quadric (default), euler-least-squares or paper\n"
+  "  --denoise MODE   auto (default: smooth when the estimated noise exceeds\n"
+  "                   0.03 x spacing), on or off\n"
+  "  --denoise-neighbors K  neighbours of the smoothing jet fit; default 32\n"
+  "  --extraction NAME front (default: one sheet per part, open or closed)\n"
+  "                   or solid (the boundary of the enclosed solid)\n"
   "  --output DIR     default ./conformal_curvature_out\n"
   "  --quiet          no progress and no summary\n"
   "Writes DIR/surface_<scale>_rings<k>.ply per scale and ring size, and\n"
@@ -64,6 +70,9 @@ struct Options
                                      CAS3::Scale::quantile(0.35), CAS3::Scale::quantile(0.50)};
   std::vector<int> rings = {1, 2};
   CAS3::Curvature_estimator estimator = CAS3::QUADRIC_FIT;
+  CAS3::Denoising denoising = CAS3::AUTOMATIC_DENOISING;
+  unsigned int denoising_neighbors = CAS3::default_denoising_neighbors();
+  CAS3::Surface_extraction extraction = CAS3::ADVANCING_FRONT;
   std::string output = "conformal_curvature_out";
   bool quiet = false;
   bool help = false;
@@ -123,6 +132,30 @@ Options parse(int argc, char* argv[])
       else if(name == "euler-least-squares") o.estimator = CAS3::EULER_LEAST_SQUARES_FIT;
       else if(name == "paper") o.estimator = CAS3::PAPER_EULER_FIT;
       else throw Failure("--estimator: unknown estimator '" + name + "' (quadric, euler-least-squares, paper)");
+    }
+    else if(arg == "--denoise")
+    {
+      const std::string mode = value();
+      if(mode == "auto") o.denoising = CAS3::AUTOMATIC_DENOISING;
+      else if(mode == "on") o.denoising = CAS3::ALWAYS_DENOISE;
+      else if(mode == "off") o.denoising = CAS3::NEVER_DENOISE;
+      else throw Failure("--denoise: unknown mode '" + mode + "' (auto, on, off)");
+    }
+    else if(arg == "--denoise-neighbors")
+    {
+      const std::string item = value();
+      unsigned int k = 0;
+      const auto r = std::from_chars(item.data(), item.data() + item.size(), k);
+      if(r.ec != std::errc() || r.ptr != item.data() + item.size() || k < 7)
+        throw Failure("--denoise-neighbors: not a neighbour count >= 7: '" + item + "'");
+      o.denoising_neighbors = k;
+    }
+    else if(arg == "--extraction")
+    {
+      const std::string name = value();
+      if(name == "front") o.extraction = CAS3::ADVANCING_FRONT;
+      else if(name == "solid") o.extraction = CAS3::SOLID_BOUNDARY;
+      else throw Failure("--extraction: unknown extraction '" + name + "' (front, solid)");
     }
     else if(arg == "--output")
       o.output = value();
@@ -309,7 +342,12 @@ int run(const Options& o)
   const std::vector<Point> points = read_input(o.input);
   progress("read " + std::to_string(points.size()) + " points");
   std::unique_ptr<Analysis> analysis;
-  try { analysis = std::make_unique<Analysis>(points.begin(), points.end()); }
+  try
+  {
+    analysis = std::make_unique<Analysis>(points.begin(), points.end(),
+      CAS3::parameters::denoising(o.denoising, CAS3::parameters::denoising_neighbors(o.denoising_neighbors,
+                                  CAS3::parameters::surface_extraction(o.extraction))));
+  }
   catch(const std::invalid_argument& e) { throw Failure(o.input + ": " + e.what()); }
   progress("built the conformal alpha shape");
 
@@ -317,15 +355,26 @@ int run(const Options& o)
   std::ofstream csv = output.open("curvatures.csv", false);
   csv << "point_index,x,y,z,alpha_hat,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z\n";
   std::ostringstream summary;
-  summary << o.input << ": " << points.size() << " points\n"
+  char noise[160];
+  std::snprintf(noise, sizeof noise, "noise: %.3g x spacing, %s\n", analysis->noise(),
+                analysis->denoised() ? "points smoothed before building the shape" : "no smoothing");
+  summary << o.input << ": " << points.size() << " points\n" << noise
+          << "surface: " << (o.extraction == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
+          << "; orientation: "
+          << (analysis->has_reference_normals() ? "the majority of the input normals, per part"
+                                                : "closed parts outward, open parts away from the centre")
+          << "\n"
           << "scale      alpha_hat   rings  on surface     faces    H:  5%          50%          95%"
              "      K:  5%          50%          95%\n";
   for(const CAS3::Scale& scale : o.scales)
   {
     const double alpha = analysis->alpha(scale);
     Analysis::Surface surface;
-    const CAS3::Boundary_surface_report report = analysis->extract_surface(alpha, surface);
+    const CAS3::Surface_report report = analysis->extract_surface(alpha, surface);
     progress("scale " + scale.label() + ": surface of " + std::to_string(report.number_of_faces) + " faces");
+    summary << "scale " << scale.label() << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
+            << " closed, " << report.number_of_open_parts() << " open), "
+            << report.number_of_points_off_surface << " points off the surface\n";
     for(int k : o.rings)
     {
       const auto curvatures = analysis->estimate_curvatures(surface, k, o.estimator);

@@ -5,10 +5,14 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_MULTISCALE_CURVATURES_H
 
 #include <CGAL/Conformal_alpha_shape_3.h>
+#include <CGAL/Conformal_alpha_shapes_3/denoise.h>
 #include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>
 #include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
+#include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -29,7 +33,7 @@ namespace Conformal_alpha_shapes_3 {
 A requested internal scale `a`: an absolute value, a quantile of the facet
 values (the paper's "10%, 25%, 35%, 50%", see
 `Conformal_alpha_shape_3::alpha_at_quantile()`), or automatic
-(`suggest_alpha()`).
+(`suggest_scale()`, or `suggest_alpha()` for the solid boundary).
 */
 class Scale
 {
@@ -101,11 +105,14 @@ struct Point_curvature
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
-Multi-scale curvature of a point cloud: the conformal alpha shape of the
-points is built once; then, for any scale, its boundary surface is
-extracted (`extract_boundary_surface()`), and for any ring size the
-curvature estimated on that surface (`estimate_vertex_curvatures()`) is
-given back per input point.
+Multi-scale curvature of a point cloud: the noise of the points is
+estimated (`estimate_noise()`) and, when it matters, the points are
+smoothed (`denoise()`); the conformal alpha shape of the (smoothed) points
+is built once; then, for any scale, its surface is extracted
+(`extract_surface()` by default, or `extract_boundary_surface()`), and for
+any ring size the curvature estimated on that surface
+(`estimate_vertex_curvatures()`) is given back per input point. Surfaces
+are built on the smoothed positions; values are reported by input index.
 
 Surfaces are `Surface_mesh` objects with the vertex properties
 `"v:input_index"` (`std::size_t`) and, after `estimate_curvatures()`,
@@ -128,18 +135,75 @@ public:
   typedef CGAL::Surface_mesh<Point> Surface;
   typedef typename Surface::Vertex_index Surface_vertex;
 
-  /// Builds the conformal alpha shape of the points in `[first, last)`, with
-  /// the local scales that `local_scale_estimator` selects.
-  /// \throws std::invalid_argument as `Conformal_alpha_shape_3`.
-  template <class InputIterator>
+  /*!
+  Builds the conformal alpha shape of the points in `[first, last)`.
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{reference_normals}
+      \cgalParamDescription{a normal per input point (a scanner's) that the surfaces' orientation follows, or an empty vector}
+      \cgalParamType{`std::vector<Vector>`}
+      \cgalParamDefault{empty}
+    \cgalParamNEnd
+    \cgalParamNBegin{denoising}
+      \cgalParamDescription{whether the points are smoothed first}
+      \cgalParamType{`Denoising`}
+      \cgalParamDefault{`AUTOMATIC_DENOISING`: when the estimated noise exceeds `noise_threshold()`}
+    \cgalParamNEnd
+    \cgalParamNBegin{denoising_neighbors}
+      \cgalParamDescription{the neighbours of the smoothing jet fit}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`default_denoising_neighbors()`}
+    \cgalParamNEnd
+    \cgalParamNBegin{surface_extraction}
+      \cgalParamDescription{how surfaces are extracted}
+      \cgalParamType{`Surface_extraction`}
+      \cgalParamDefault{`ADVANCING_FRONT`}
+    \cgalParamNEnd
+    \cgalParamNBegin{local_scale_estimator}
+      \cgalParamDescription{the local scales of the shape}
+      \cgalParamType{`Local_scale_estimator`}
+      \cgalParamDefault{`NOISE_ROBUST_POLE_DISTANCE`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \throws std::invalid_argument as `Conformal_alpha_shape_3`, and when
+  `reference_normals` is neither empty nor one per point.
+  */
+  template <class InputIterator, class NamedParameters = CGAL::parameters::Default_named_parameters>
   Multiscale_curvatures(InputIterator first, InputIterator last,
-                        Local_scale_estimator local_scales = NOISE_ROBUST_POLE_DISTANCE)
-    : m_shape(first, last, parameters::local_scale_estimator(local_scales))
-  {}
+                        const NamedParameters& np = CGAL::parameters::default_values())
+  {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    m_extraction = choose_parameter(get_parameter(np, internal_np_cas3::surface_extraction), ADVANCING_FRONT);
+    m_reference_normals = choose_parameter(get_parameter(np, internal_np_cas3::reference_normals),
+                                           std::vector<Vector>());
+    std::vector<Point> points(first, last);
+    if(!m_reference_normals.empty() && m_reference_normals.size() != points.size())
+      throw std::invalid_argument("Multiscale_curvatures: " + std::to_string(m_reference_normals.size())
+                                  + " reference normals for " + std::to_string(points.size()) + " points");
+    const Denoising denoising = choose_parameter(get_parameter(np, internal_np_cas3::denoising),
+                                                 AUTOMATIC_DENOISING);
+    m_noise = estimate_noise(points);
+    m_denoised = denoising == ALWAYS_DENOISE || (denoising == AUTOMATIC_DENOISING && m_noise > noise_threshold());
+    if(m_denoised)
+      denoise(points, choose_parameter(get_parameter(np, internal_np_cas3::denoising_neighbors),
+                                       default_denoising_neighbors()));
+    m_shape.make_conformal_alpha_shape(points.begin(), points.end(), parameters::local_scale_estimator(
+      choose_parameter(get_parameter(np, internal_np_cas3::local_scale_estimator), NOISE_ROBUST_POLE_DISTANCE)));
+  }
 
   const Shape& shape() const { return m_shape; }
+  /// the noise of the input points, as a multiple of their spacing (`estimate_noise()`)
+  double noise() const { return m_noise; }
+  /// whether the shape was built on smoothed points
+  bool denoised() const { return m_denoised; }
+  /// how surfaces are extracted
+  Surface_extraction extraction() const { return m_extraction; }
+  /// whether reference normals orient the surfaces
+  bool has_reference_normals() const { return !m_reference_normals.empty(); }
 
-  /// The absolute value of a requested scale (`suggest_alpha()` is run once).
+  /// The absolute value of a requested scale (the automatic one is computed once).
   double alpha(const Scale& scale) const
   {
     switch(scale.kind())
@@ -149,17 +213,29 @@ public:
       case Scale::AUTOMATIC: break;
     }
     if(!(m_suggested >= 0))
-      m_suggested = suggest_alpha(m_shape);
+      m_suggested = m_extraction == ADVANCING_FRONT ? suggest_scale(m_shape) : suggest_alpha(m_shape);
     return m_suggested;
   }
 
-  /// Replaces `surface` with the boundary surface at `alpha`.
-  Boundary_surface_report extract_surface(double alpha, Surface& surface) const
+  /// Replaces `surface` with the surface at `alpha`.
+  Surface_report extract_surface(double alpha, Surface& surface) const
   {
     surface.clear();
-    return extract_boundary_surface(m_shape, alpha, surface,
-      parameters::vertex_input_index_map(
-        surface.template add_property_map<Surface_vertex, std::size_t>("v:input_index").first));
+    auto input_index = surface.template add_property_map<Surface_vertex, std::size_t>("v:input_index").first;
+    if(m_extraction == ADVANCING_FRONT)
+      return Conformal_alpha_shapes_3::extract_surface(m_shape, alpha, surface,
+        parameters::vertex_input_index_map(input_index, parameters::reference_normals(std::cref(m_reference_normals))));
+    const Boundary_surface_report solid =
+      extract_boundary_surface(m_shape, alpha, surface, parameters::vertex_input_index_map(input_index));
+    Surface_report report;
+    report.number_of_faces = solid.number_of_faces;
+    report.number_of_vertices = solid.number_of_vertices;
+    report.number_of_points_off_surface = solid.number_of_points_off_surface;
+    report.number_of_input_points = solid.number_of_input_points;
+    auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), surface);
+    report.number_of_parts = CGAL::Polygon_mesh_processing::connected_components(surface, part);
+    report.number_of_closed_parts = report.number_of_parts;  // the boundary of a solid is closed
+    return report;
   }
 
   /// Estimates the curvature of `surface` (from `extract_surface()`) at ring
@@ -223,6 +299,10 @@ public:
 
 private:
   Shape m_shape;
+  Surface_extraction m_extraction = ADVANCING_FRONT;
+  std::vector<Vector> m_reference_normals;
+  double m_noise = 0;
+  bool m_denoised = false;
   mutable double m_suggested = -1;
 };
 
@@ -236,7 +316,7 @@ struct Curvature_layer
   Scale scale;                        ///< as requested
   double alpha;                       ///< its absolute value
   int ring_size;
-  Boundary_surface_report surface;    ///< what the extraction did
+  Surface_report surface;             ///< what the extraction did
   std::vector<Point_curvature<Kernel> > points;  ///< by input index
 };
 
@@ -267,10 +347,8 @@ layers do not fit in memory, use `Multiscale_curvatures` one layer at a time.
     \cgalParamType{`Curvature_estimator`}
     \cgalParamDefault{`QUADRIC_FIT`}
   \cgalParamNEnd
-  \cgalParamNBegin{local_scale_estimator}
-    \cgalParamDescription{the local scales of the shape}
-    \cgalParamType{`Local_scale_estimator`}
-    \cgalParamDefault{`NOISE_ROBUST_POLE_DISTANCE`}
+  \cgalParamNBegin{reference_normals, denoising, denoising_neighbors, surface_extraction, local_scale_estimator}
+    \cgalParamDescription{as for `Multiscale_curvatures`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -294,14 +372,13 @@ multiscale_curvatures(const PointRange& points, const NamedParameters& np = CGAL
       throw std::invalid_argument("multiscale_curvatures: ring size " + std::to_string(k) + " is below 1");
   const Curvature_estimator estimator = choose_parameter(get_parameter(np, internal_np_cas3::estimator), QUADRIC_FIT);
 
-  const Multiscale_curvatures<Kernel> analysis(points.begin(), points.end(),
-    choose_parameter(get_parameter(np, internal_np_cas3::local_scale_estimator), NOISE_ROBUST_POLE_DISTANCE));
+  const Multiscale_curvatures<Kernel> analysis(points.begin(), points.end(), np);
   std::vector<Curvature_layer<Kernel> > layers;
   for(const Scale& scale : scales)
   {
     typename Multiscale_curvatures<Kernel>::Surface surface;
     const double alpha = analysis.alpha(scale);
-    const Boundary_surface_report report = analysis.extract_surface(alpha, surface);
+    const Surface_report report = analysis.extract_surface(alpha, surface);
     for(int k : ring_sizes)
       layers.push_back(Curvature_layer<Kernel>{scale, alpha, k, report,
                                                analysis.estimate_curvatures(surface, k, estimator)});

@@ -24,6 +24,10 @@ enum local_scale_estimator_t { local_scale_estimator };
 enum minimum_fraction_on_surface_t { minimum_fraction_on_surface };
 enum scales_t { scales };
 enum ring_sizes_t { ring_sizes };
+enum reference_normals_t { reference_normals };
+enum surface_extraction_t { surface_extraction };
+enum denoising_t { denoising };
+enum denoising_neighbors_t { denoising_neighbors };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -68,6 +72,10 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale_estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(minimum_fraction_on_surface)
 CGAL_CAS3_ADD_NAMED_PARAMETER(scales)
 CGAL_CAS3_ADD_NAMED_PARAMETER(ring_sizes)
+CGAL_CAS3_ADD_NAMED_PARAMETER(reference_normals)
+CGAL_CAS3_ADD_NAMED_PARAMETER(surface_extraction)
+CGAL_CAS3_ADD_NAMED_PARAMETER(denoising)
+CGAL_CAS3_ADD_NAMED_PARAMETER(denoising_neighbors)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

@@ -1,0 +1,169 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ADVANCING_FRONT_FACETS_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ADVANCING_FRONT_FACETS_H
+
+#include <CGAL/Advancing_front_surface_reconstruction.h>
+#include <CGAL/Advancing_front_surface_reconstruction_cell_base_3.h>
+#include <CGAL/Advancing_front_surface_reconstruction_vertex_base_3.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Unique_hash_map.h>
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+// A triangle soup grown facet by facet over the Delaunay facets of the
+// conformal complex at scale `a` (the manual, "Surface extraction"), by
+// CGAL's Advancing_front_surface_reconstruction with the conformal value of a
+// facet as its priority: smaller values first, and no facet whose value
+// exceeds `a`. The front only grows where the surface stays an oriented
+// 2-manifold, so the soup is one sheet per part of the sampled surface,
+// closed or with a border, consistently oriented within each part.
+//
+// The advancing front removes the vertices it cannot attach from the
+// triangulation it works on, so it runs on a copy of the shape's
+// triangulation (a combinatorial copy: no predicate is evaluated again) whose
+// cells carry the conformal values of their facets.
+struct Advancing_front_soup
+{
+  // vertex of the shape (its `vertex_index()`) of each soup vertex; a shape
+  // vertex where the front met itself appears once per sheet through it
+  std::vector<std::size_t> shape_vertex;
+  // triangles over soup vertices, consistently oriented in each part
+  std::vector<std::array<std::size_t, 3> > triangles;
+  // for each triangle, its three neighbours across the edges opposite to its
+  // vertices (an index into `triangles`), or `no_neighbor` on a border
+  std::vector<std::array<std::size_t, 3> > neighbors;
+  // the conformal value of each triangle's facet
+  std::vector<double> values;
+  static constexpr std::size_t no_neighbor = std::size_t(-1);
+};
+
+// The values an advancing-front cell carries: the conformal value of each
+// facet and of the cell; cells the front creates while removing a vertex
+// have none (infinite: never a candidate).
+struct Conformal_cell_values
+{
+  std::array<double, 4> facet{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
+  double cell = std::numeric_limits<double>::infinity();
+};
+
+// The front's priority: the conformal value of a facet of the complex at `a`
+// that is on the boundary of the union of its cells (REGULAR or SINGULAR);
+// other facets are never taken.
+struct Conformal_priority
+{
+  double a;
+
+  template <class AdvancingFront, class Cell_handle>
+  double operator()(const AdvancingFront&, Cell_handle& c, const int& i) const
+  {
+    const double value = c->info().facet[i];
+    return value <= a ? value : std::numeric_limits<double>::infinity();
+  }
+};
+
+template <class Cas>
+Advancing_front_soup advancing_front_soup(const Cas& cas, double a)
+{
+  typedef typename Cas::Geom_traits Gt;
+  typedef Advancing_front_surface_reconstruction_vertex_base_3<Gt> Vb;
+  typedef Advancing_front_surface_reconstruction_cell_base_3<
+    Gt, Triangulation_cell_base_with_info_3<Conformal_cell_values, Gt, Delaunay_triangulation_cell_base_3<Gt> > > Cb;
+  typedef Delaunay_triangulation_3<Gt, Triangulation_data_structure_3<Vb, Cb> > Front_triangulation;
+  typedef Advancing_front_surface_reconstruction<Front_triangulation, Conformal_priority> Front;
+  typedef typename Front_triangulation::Vertex Front_vertex;
+  typedef typename Front_triangulation::Cell Front_cell;
+  typedef typename Cas::Triangulation_data_structure::Vertex Shape_vertex;
+  typedef typename Cas::Triangulation_data_structure::Cell Shape_cell;
+
+  Advancing_front_soup soup;
+  if(cas.dimension() < 3)
+    return soup;
+
+  const std::size_t no_vertex = std::size_t(-1);
+  const Shape_vertex* const infinite = &*cas.infinite_vertex();
+  struct Convert_vertex
+  {
+    const Shape_vertex* infinite;
+    std::size_t no_vertex;
+    Front_vertex operator()(const Shape_vertex& v) const { return Front_vertex(v.point()); }
+    void operator()(const Shape_vertex& v, Front_vertex& w) const
+    {
+      w.id() = &v == infinite ? no_vertex : v.vertex_index();
+    }
+  };
+  struct Convert_cell
+  {
+    const Cas* cas;
+    Front_cell operator()(const Shape_cell&) const { return Front_cell(); }
+    void operator()(const Shape_cell& c, Front_cell& d) const
+    {
+      const typename Cas::Cell_handle h = cas->tds().cells().iterator_to(const_cast<Shape_cell&>(c));
+      Conformal_cell_values& values = d.info();
+      const bool infinite_cell = cas->is_infinite(h);
+      values.cell = infinite_cell ? std::numeric_limits<double>::infinity() : cas->conformal_alpha(h);
+      for(int i = 0; i < 4; ++i)
+        values.facet[i] = cas->is_infinite(h, i) ? std::numeric_limits<double>::infinity()
+                                                 : double(cas->conformal_alpha(h, i));
+    }
+  };
+
+  Front_triangulation triangulation(cas.geom_traits());
+  triangulation.set_infinite_vertex(
+    triangulation.tds().copy_tds(cas.tds(), cas.infinite_vertex(), Convert_vertex{infinite, no_vertex},
+                                 Convert_cell{&cas}));
+  Front front(triangulation, Conformal_priority{a});
+  front.run();
+
+  typedef typename Front::Triangulation_data_structure_2 Tds_2;
+  const Tds_2& tds = front.triangulation_data_structure_2();
+  CGAL::Unique_hash_map<typename Tds_2::Vertex_handle, std::size_t> soup_vertex(no_vertex);
+  CGAL::Unique_hash_map<typename Tds_2::Face_handle, std::size_t> soup_triangle(no_vertex);
+  for(auto f = tds.faces_begin(); f != tds.faces_end(); ++f)
+  {
+    if(!f->is_on_surface())
+      continue;
+    soup_triangle[f] = soup.triangles.size();
+    std::array<std::size_t, 3> triangle;
+    for(int k = 0; k < 3; ++k)
+    {
+      std::size_t& s = soup_vertex[f->vertex(k)];
+      if(s == no_vertex)
+      {
+        s = soup.shape_vertex.size();
+        soup.shape_vertex.push_back(f->vertex(k)->vertex_3()->id());
+      }
+      triangle[k] = s;
+    }
+    soup.triangles.push_back(triangle);
+    soup.values.push_back(f->facet().first->info().facet[f->facet().second]);
+  }
+  soup.neighbors.reserve(soup.triangles.size());
+  for(auto f = tds.faces_begin(); f != tds.faces_end(); ++f)
+  {
+    if(!f->is_on_surface())
+      continue;
+    std::array<std::size_t, 3> n;
+    for(int k = 0; k < 3; ++k)
+      n[k] = f->neighbor(k)->is_on_surface() ? soup_triangle[f->neighbor(k)] : Advancing_front_soup::no_neighbor;
+    soup.neighbors.push_back(n);
+  }
+  return soup;
+}
+
+} // namespace internal
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ADVANCING_FRONT_FACETS_H
