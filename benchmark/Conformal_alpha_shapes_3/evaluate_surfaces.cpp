@@ -28,8 +28,9 @@
 //
 // Metrics per case: coverage (share of input points with finite values),
 // orientation (share of covered points whose normal agrees with the true
-// one; for open surfaces and scans without given normals the larger of it
-// and its complement, H then being compared after that global flip),
+// one; for open surfaces and scans not given normals the larger of it and
+// its complement, H then being compared after that global flip; given
+// normals, the plain share, whether the pipeline uses them or not),
 // median and 90th percentile of |H_est - H_true| over covered points
 // divided by the median |H_true| over all points (likewise K), at the best
 // ring size (smallest median H error) of --rings; surface components when
@@ -187,6 +188,8 @@ Accuracy accuracy(const std::vector<Vector>& normal, const std::vector<double>& 
     const std::size_t i = index[j];
     if(!std::isfinite(H[j]) || !std::isfinite(normal[j].x()))
       continue;
+    if(truth.mean_curvature.empty())
+      continue;  // reference normals only
     if(judge.planar)
       eH.push_back(std::abs(H[j]) * judge.spacing);
     else
@@ -440,7 +443,6 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
                         const std::vector<std::string>& names, bool planar, double noise, const Options& o,
                         std::vector<Row>& rows, std::ostream* csv)
 {
-  const bool given = o.normals && pipeline_uses_input_normals;
   std::vector<Layer> layers;
   std::string failure;
   const std::clock_t start = std::clock();
@@ -458,7 +460,7 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
   for(std::size_t t = 0; t < truths.size(); ++t)
   {
     const Sample& truth = *truths[t];
-    const Judge judge = judge_of(truth, planar, !truth.closed && !given);
+    const Judge judge = judge_of(truth, planar, !truth.closed && !o.normals);
     Row row;
     row.name = names[t];
     row.n = s.points.size();
@@ -605,7 +607,7 @@ void evaluate_scan(const std::string& name, const std::string& file, const Optio
     if(given && !pipeline_uses_input_normals)
       row.note += (row.note.empty() ? "" : "; ") + std::string("normals given but not used");
     Judge judge;
-    judge.flip_allowed = !(given && pipeline_uses_input_normals);
+    judge.flip_allowed = !given;
     std::vector<std::size_t> all(points.size());
     for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
     // reference normals only: the best ring is the best oriented one
