@@ -691,9 +691,10 @@ int main(int argc, char* argv[])
   std::vector<Row> rows;
   const cas3_benchmark::Phase total;
 
-  unsigned seed = 100;
-  for(const Shape& shape : grid_shapes())
+  const std::vector<Shape> shapes = grid_shapes();
+  for(std::size_t shape_index = 0; shape_index < shapes.size(); ++shape_index)
   {
+    const Shape& shape = shapes[shape_index];
     if(!o.selected(shape.name))
       continue;
     for(std::size_t n : o.sizes)
@@ -702,7 +703,8 @@ int main(int argc, char* argv[])
       for(double r : o.noises)
       {
         Sample s = clean;
-        ++seed;
+        // the same noise for a case whatever else is selected
+        const unsigned seed = unsigned(1000 * shape_index + n + std::lround(1000 * r));
         if(shape.planar && r == 0)
           cas3_analytic::add_normal_noise(s, 1e-4, seed);
         else
