@@ -5,7 +5,7 @@
 //   evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large]
 //                     [--noise 0,0.1,0.3] [--rings 1,2,3] [--normals]
 //                     [--jet-samples 5000] [--no-jet] [--data DIR]
-//                     [--csv FILE] [--list]
+//                     [--csv FILE] [--list] [--check-truth]
 //
 // Cases (--list prints them): the closed surfaces ellipsoid (1 : 0.7 : 0.4),
 // torus (R = 1, r = 0.35), bumpy_sphere (r = 1 + 0.02 sin(10x) sin(10y)
@@ -39,6 +39,7 @@
 // noisy data, {12,24} on clean data, normal sign from the truth). For the
 // plane the H columns hold median (p90) |H| * spacing, marked '*'.
 // The pipeline is called in one place only: run_pipeline().
+// --check-truth compares the generators' truth with closed forms and exits.
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -629,6 +630,44 @@ void evaluate_scan(const std::string& name, const std::string& file, const Optio
   }
 }
 
+// The truth of the generators against closed forms: torus (k1 = 1/r,
+// k2 = cos v / (R + r cos v)), ellipsoid (K = 1 / (a^2 b^2 c^2 s^2) and
+// H = |x^2 + y^2 + z^2 - a^2 - b^2 - c^2| / (2 a^2 b^2 c^2 s^(3/2)),
+// s = x^2/a^4 + y^2/b^4 + z^2/c^4), its area (Knud Thomsen's formula, within
+// 1.1%), and the torus area 4 pi^2 R r.
+bool check_truth()
+{
+  double worst = 0;
+  const Sample t = cas3_analytic::torus_truth_sample<Point, Vector>(2000, 1, 0.35);
+  for(std::size_t i = 0; i < t.points.size(); ++i)
+  {
+    const Point& p = t.points[i];
+    const double cos_v = (std::sqrt(p.x() * p.x() + p.y() * p.y()) - 1) / 0.35;
+    const double k1 = 1 / 0.35, k2 = cos_v / (1 + 0.35 * cos_v);
+    worst = std::max({worst, std::abs(t.mean_curvature[i] - (k1 + k2) / 2), std::abs(t.gaussian_curvature[i] - k1 * k2),
+                      std::abs(t.normals[i].squared_length() - 1)});
+  }
+  const double a = 1, b = 0.7, c = 0.4;
+  const Sample e = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(2000, a, b, c);
+  for(std::size_t i = 0; i < e.points.size(); ++i)
+  {
+    const Point& p = e.points[i];
+    const double s = p.x() * p.x() / (a * a * a * a) + p.y() * p.y() / (b * b * b * b) + p.z() * p.z() / (c * c * c * c);
+    const double K = 1 / (a * a * b * b * c * c * s * s);
+    const double H = std::abs(p.x() * p.x() + p.y() * p.y() + p.z() * p.z() - a * a - b * b - c * c) /
+                     (2 * a * a * b * b * c * c * std::pow(s, 1.5));
+    worst = std::max({worst, std::abs(e.gaussian_curvature[i] / K - 1), std::abs(e.mean_curvature[i] / H - 1)});
+  }
+  const double q = 1.6075;
+  const double thomsen =
+    4 * M_PI * std::pow((std::pow(a * b, q) + std::pow(a * c, q) + std::pow(b * c, q)) / 3, 1 / q);
+  const bool ok = worst < 1e-9 && std::abs(e.area / thomsen - 1) < 0.011 &&
+                  std::abs(t.area / (4 * M_PI * M_PI * 0.35) - 1) < 1e-12;
+  std::printf("truth check: largest error %.2g; ellipsoid area %.5f (Thomsen %.5f); torus area %.5f (exact %.5f): %s\n",
+              worst, e.area, thomsen, t.area, 4 * M_PI * M_PI * 0.35, ok ? "ok" : "FAILED");
+  return ok;
+}
+
 int main(int argc, char* argv[])
 {
   Options o;
@@ -648,6 +687,7 @@ int main(int argc, char* argv[])
       else if(arg == "--large") o.large = true;
       else if(arg == "--normals") o.normals = true;
       else if(arg == "--no-jet") o.jet = false;
+      else if(arg == "--check-truth") return check_truth() ? EXIT_SUCCESS : EXIT_FAILURE;
       else if(arg == "--list")
       {
         for(const Shape& s : grid_shapes()) std::cout << s.name << "\n";
