@@ -1,0 +1,783 @@
+// evaluate_surfaces: accuracy of the end-to-end pipeline (points -> surface
+// -> normal, H, K per input point) against exact truth, with the metrics of
+// METHOD.md section 7, and CGAL's Monge_via_jet_fitting as the peer.
+//
+//   evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large]
+//                     [--noise 0,0.1,0.3] [--rings 1,2,3] [--normals]
+//                     [--jet-samples 5000] [--no-jet] [--data DIR]
+//                     [--csv FILE] [--list] [--check-truth]
+//
+// Cases (--list prints them): the closed surfaces ellipsoid (1 : 0.7 : 0.4),
+// torus (R = 1, r = 0.35), bumpy_sphere (r = 1 + 0.02 sin(10x) sin(10y)
+// sin(10z) in the direction (x, y, z)); the open surfaces ellipsoid_cap
+// (z > 0.1), torus_patch (a quarter: around angle and tube angle in
+// [0, pi], the top half of half the ring), bumpy_cap (z > 0.2), plane (the
+// square [-1, 1]^2); each at every size (--large adds 1M) and noise level
+// r: Gaussian noise along the true normal of standard deviation
+// r * spacing, spacing = sqrt(area / n). Then two clean 20k details:
+// fine_bumps (amplitude 0.005, frequency 40) and dent_bumps (the same bumps
+// on a sphere with one smooth dent), the latter judged against the truth
+// with the bumps and against the truth of the smooth dented sphere
+// (dent_bumps~smooth). Finally the real scans kitten.xyz, oni.pwn,
+// ball.ply, building.ply from --data (default: ../shared/data beside the
+// repository), whose reference normals are the only truth: each is run
+// given its normals ([normals]) and as x y z only ([xyz]).
+// Synthetic data is given to the pipeline without normals unless
+// --normals (then the true normals). The exact plane at noise 0 gets a
+// 1e-4 * spacing normal jitter, since coplanar points do not span 3D.
+//
+// Metrics per case: coverage (share of input points with finite values),
+// orientation (share of covered points whose normal agrees with the true
+// one; for open surfaces and scans not given normals the larger of it and
+// its complement, H then being compared after that global flip; given
+// normals, the plain share, whether the pipeline uses them or not),
+// median and 90th percentile of |H_est - H_true| over covered points
+// divided by the median |H_true| over all points (likewise K), at the best
+// ring size (smallest median H error) of --rings; surface components when
+// the pipeline reports them; the peer's best k and its errors (on
+// --jet-samples points spread over the sample; k in {60,120,240,480} on
+// noisy data, {12,24} on clean data, normal sign from the truth). For the
+// plane the H columns hold median (p90) |H| * spacing, marked '*'.
+// The pipeline is called in one place only: run_pipeline().
+// --check-truth compares the generators' truth with closed forms and exits.
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Monge_via_jet_fitting.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Search_traits_3.h>
+
+#include "cas3_analytic_surfaces.h"
+#include "cas3_benchmark.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef Kernel::Vector_3 Vector;
+typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
+namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+
+const double nan_value = std::numeric_limits<double>::quiet_NaN();
+
+// ---------------------------------------------------------------------------
+// The pipeline under test: the only place that calls the package.
+
+struct Layer
+{
+  int ring = 0;
+  std::vector<Vector> normal;  // per input point; NaN where undefined
+  std::vector<double> H, K;    // per input point; NaN where undefined
+  int components = -1;         // surface components, -1 when not reported
+};
+
+// Whether this version of the pipeline uses input normals.
+const bool pipeline_uses_input_normals = false;
+
+// The automatic scale, curvature at each ring size: what
+// multiscale_curvatures(points, scales({Scale::automatic()}).ring_sizes(rings))
+// computes, through Multiscale_curvatures to count the surface's components.
+std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vector<Vector>& normals,
+                                const std::vector<int>& rings)
+{
+  (void)normals;  // not taken by this version
+  typedef CAS3::Multiscale_curvatures<Kernel> Analysis;
+  const Analysis analysis(points.begin(), points.end());
+  Analysis::Surface surface;
+  analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+  auto component = surface.add_property_map<Analysis::Surface::Face_index, std::size_t>("f:component").first;
+  const int components = int(CGAL::Polygon_mesh_processing::connected_components(surface, component));
+  std::vector<Layer> layers;
+  for(int ring : rings)
+  {
+    const std::vector<CAS3::Point_curvature<Kernel> > per_point = analysis.estimate_curvatures(surface, ring);
+    Layer layer;
+    layer.ring = ring;
+    layer.components = components;
+    for(const CAS3::Point_curvature<Kernel>& p : per_point)
+    {
+      const bool ok = p.on_surface;
+      layer.normal.push_back(ok ? p.normal : Vector(nan_value, nan_value, nan_value));
+      layer.H.push_back(ok ? double(p.mean_curvature) : nan_value);
+      layer.K.push_back(ok ? double(p.gaussian_curvature) : nan_value);
+    }
+    layers.push_back(std::move(layer));
+  }
+  return layers;
+}
+
+// ---------------------------------------------------------------------------
+// Statistics
+
+// processor time of the (single-threaded) pipeline: steadier than wall time
+// on a shared machine
+double cpu_seconds_since(std::clock_t start) { return double(std::clock() - start) / CLOCKS_PER_SEC; }
+
+double quantile(std::vector<double> v, double q)
+{
+  if(v.empty())
+    return nan_value;
+  const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size())));
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+  return v[k];
+}
+
+double median_abs(const std::vector<double>& v)
+{
+  std::vector<double> a;
+  a.reserve(v.size());
+  for(double x : v) a.push_back(std::abs(x));
+  return quantile(a, 0.5);
+}
+
+struct Accuracy
+{
+  double coverage = nan_value, orientation = nan_value;
+  double H_med = nan_value, H_p90 = nan_value, K_med = nan_value, K_p90 = nan_value;
+};
+
+// How a case is judged.
+struct Judge
+{
+  bool planar = false;          // H columns: |H| * spacing; no K
+  bool flip_allowed = false;    // orientation up to one global flip
+  double H_scale = 1, K_scale = 1, spacing = 1;
+};
+
+// Errors of estimates (normals may be NaN) on the points `index` of `truth`.
+Accuracy accuracy(const std::vector<Vector>& normal, const std::vector<double>& H, const std::vector<double>& K,
+                  const std::vector<std::size_t>& index, const Sample& truth, const Judge& judge,
+                  bool orientation = true)
+{
+  Accuracy a;
+  std::size_t covered = 0, agree = 0;
+  for(std::size_t j = 0; j < index.size(); ++j)
+  {
+    const std::size_t i = index[j];
+    if(!std::isfinite(H[j]) || !std::isfinite(normal[j].x()))
+      continue;
+    ++covered;
+    if(normal[j] * truth.normals[i] > 0)
+      ++agree;
+  }
+  a.coverage = index.empty() ? nan_value : double(covered) / double(index.size());
+  double share = covered ? double(agree) / double(covered) : nan_value;
+  double sign = 1;
+  if(judge.flip_allowed && share < 0.5)
+  {
+    share = 1 - share;
+    sign = -1;
+  }
+  if(orientation)
+    a.orientation = share;
+  std::vector<double> eH, eK;
+  for(std::size_t j = 0; j < index.size(); ++j)
+  {
+    const std::size_t i = index[j];
+    if(!std::isfinite(H[j]) || !std::isfinite(normal[j].x()))
+      continue;
+    if(truth.mean_curvature.empty())
+      continue;  // reference normals only
+    if(judge.planar)
+      eH.push_back(std::abs(H[j]) * judge.spacing);
+    else
+    {
+      eH.push_back(std::abs(sign * H[j] - truth.mean_curvature[i]) / judge.H_scale);
+      eK.push_back(std::abs(K[j] - truth.gaussian_curvature[i]) / judge.K_scale);
+    }
+  }
+  a.H_med = quantile(eH, 0.5);
+  a.H_p90 = quantile(eH, 0.9);
+  a.K_med = quantile(eK, 0.5);
+  a.K_p90 = quantile(eK, 0.9);
+  return a;
+}
+
+// ---------------------------------------------------------------------------
+// The peer: degree 2 jet, degree 2 Monge form, on the k nearest neighbours.
+
+struct Jet_accuracy
+{
+  int k = 0;
+  Accuracy accuracy;
+};
+
+std::vector<Jet_accuracy> jet_accuracy(const Sample& s, const Sample& truth, const std::vector<int>& ks,
+                                       std::size_t samples, const Judge& judge)
+{
+  typedef CGAL::Search_traits_3<Kernel> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+  typedef CGAL::Monge_via_jet_fitting<Kernel> Fitting;
+  const Search::Tree tree(s.points.begin(), s.points.end());
+  const std::size_t n = s.points.size();
+  const std::size_t step = samples == 0 || samples >= n ? 1 : n / samples;
+  std::vector<std::size_t> index;
+  for(std::size_t i = 0; i < n; i += step) index.push_back(i);
+  const int k_max = *std::max_element(ks.begin(), ks.end());
+  std::vector<std::vector<Vector> > normal(ks.size());
+  std::vector<std::vector<double> > H(ks.size()), K(ks.size());
+  std::vector<Point> neighbours;
+  for(std::size_t i : index)
+  {
+    neighbours.clear();
+    const Search search(tree, s.points[i], unsigned(k_max));
+    for(auto it = search.begin(); it != search.end(); ++it) neighbours.push_back(it->first);
+    for(std::size_t j = 0; j < ks.size(); ++j)
+    {
+      const std::size_t k = std::min<std::size_t>(std::size_t(ks[j]), neighbours.size());
+      Fitting fitting;
+      Fitting::Monge_form form = fitting(neighbours.begin(), neighbours.begin() + std::ptrdiff_t(k), 2, 2);
+      form.comply_wrt_given_normal(truth.normals[i]);
+      // Monge form z = (k1 x^2 + k2 y^2) / 2 along the normal: convex with
+      // outward normal has k1, k2 < 0 there, > 0 in this package's convention
+      const double k1 = -form.principal_curvatures(0), k2 = -form.principal_curvatures(1);
+      normal[j].push_back(form.normal_direction());
+      H[j].push_back((k1 + k2) / 2);
+      K[j].push_back(k1 * k2);
+    }
+  }
+  std::vector<Jet_accuracy> out;
+  for(std::size_t j = 0; j < ks.size(); ++j)
+    out.push_back(Jet_accuracy{ks[j], accuracy(normal[j], H[j], K[j], index, truth, judge)});
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// The table
+
+struct Row
+{
+  std::string name;
+  std::size_t n = 0;
+  std::string noise = "-";
+  double coverage = nan_value, orientation = nan_value;
+  int components = -1;
+  std::string rings;
+  int best_ring = 0;
+  bool planar = false;
+  double H_med = nan_value, H_p90 = nan_value, K_med = nan_value, K_p90 = nan_value;
+  int jet_k = 0;
+  double jet_H_med = nan_value, jet_H_p90 = nan_value, jet_K_med = nan_value;
+  double seconds = nan_value;
+  std::string note;
+};
+
+std::string percent(double x)
+{
+  if(!std::isfinite(x))
+    return "-";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", 100 * x);
+  return b;
+}
+
+// relative error in percent, or |H| * spacing for the plane
+std::string error(double x, bool planar)
+{
+  if(!std::isfinite(x))
+    return "-";
+  char b[32];
+  if(planar)
+    std::snprintf(b, sizeof b, "%.4f*", x);
+  else
+    std::snprintf(b, sizeof b, "%.1f", 100 * x);
+  return b;
+}
+
+std::string number(double x, const char* format = "%.6g")
+{
+  if(!std::isfinite(x))
+    return "";
+  char b[32];
+  std::snprintf(b, sizeof b, format, x);
+  return b;
+}
+
+void print_header()
+{
+  std::printf("%-24s %8s %5s %6s %6s %5s %-9s %4s %8s %8s %7s %7s | %5s %8s %8s %7s | %7s %s\n", "case", "n",
+              "noise", "cover%", "orient", "comps", "rings", "best", "H med%", "H p90%", "K med%", "K p90%", "jet k",
+              "jet Hmed", "jet Hp90", "jet Kmed", "cpu s", "note");
+}
+
+void print_row(const Row& r)
+{
+  std::printf("%-24s %8zu %5s %6s %6s %5s %-9s %4s %8s %8s %7s %7s | %5s %8s %8s %7s | %7s %s\n", r.name.c_str(), r.n,
+              r.noise.c_str(), percent(r.coverage).c_str(), percent(r.orientation).c_str(),
+              r.components < 0 ? "-" : std::to_string(r.components).c_str(), r.rings.c_str(),
+              r.best_ring ? std::to_string(r.best_ring).c_str() : "-", error(r.H_med, r.planar).c_str(),
+              error(r.H_p90, r.planar).c_str(), error(r.K_med, false).c_str(), error(r.K_p90, false).c_str(),
+              r.jet_k ? std::to_string(r.jet_k).c_str() : "-", error(r.jet_H_med, r.planar).c_str(),
+              error(r.jet_H_p90, r.planar).c_str(), error(r.jet_K_med, false).c_str(),
+              number(r.seconds, "%.1f").c_str(), r.note.c_str());
+  std::fflush(stdout);
+}
+
+const char* csv_header = "case,n,noise,coverage,orientation,components,rings,best_ring,H_measure,H_med,H_p90,"
+                         "K_med,K_p90,jet_best_k,jet_H_med,jet_H_p90,jet_K_med,pipeline_cpu_seconds,note\n";
+
+void write_csv_row(std::ostream& out, const Row& r)
+{
+  out << r.name << ',' << r.n << ',' << r.noise << ',' << number(r.coverage) << ',' << number(r.orientation) << ','
+      << (r.components < 0 ? std::string() : std::to_string(r.components)) << ",\"" << r.rings << "\","
+      << (r.best_ring ? std::to_string(r.best_ring) : std::string()) << ','
+      << (r.planar ? "abs_H_times_spacing" : "relative") << ',' << number(r.H_med) << ',' << number(r.H_p90) << ','
+      << number(r.K_med) << ',' << number(r.K_p90) << ',' << (r.jet_k ? std::to_string(r.jet_k) : std::string())
+      << ',' << number(r.jet_H_med) << ',' << number(r.jet_H_p90) << ',' << number(r.jet_K_med) << ','
+      << number(r.seconds, "%.2f") << ",\"" << r.note << "\"\n";
+  out.flush();
+}
+
+// ---------------------------------------------------------------------------
+// Options
+
+struct Options
+{
+  std::vector<std::string> cases;  // empty: all
+  std::vector<std::size_t> sizes = {20000, 100000};
+  std::vector<double> noises = {0, 0.1, 0.3};
+  std::vector<int> rings = {1, 2, 3};
+  bool large = false, normals = false, jet = true;
+  std::size_t jet_samples = 5000;
+  std::string data = CAS3_SHARED_DATA;
+  std::string csv;
+  bool selected(const std::string& name) const
+  {
+    return cases.empty() || std::find(cases.begin(), cases.end(), name) != cases.end();
+  }
+};
+
+template <class T>
+std::vector<T> parse_list(const std::string& text)
+{
+  std::vector<T> v;
+  std::stringstream list(text);
+  std::string item;
+  while(std::getline(list, item, ','))
+  {
+    std::stringstream s(item);
+    T x;
+    if(!(s >> x))
+      throw std::invalid_argument("bad list item '" + item + "'");
+    v.push_back(x);
+  }
+  return v;
+}
+
+std::string join(const std::vector<int>& v)
+{
+  std::string s;
+  for(int x : v) s += (s.empty() ? "" : ",") + std::to_string(x);
+  return s;
+}
+
+std::string noise_label(double r)
+{
+  std::ostringstream s;
+  s << r;
+  return s.str();
+}
+
+// ---------------------------------------------------------------------------
+// Cases
+
+struct Shape
+{
+  std::string name;
+  bool planar;
+  std::function<Sample(std::size_t)> make;
+};
+
+std::vector<Shape> grid_shapes()
+{
+  using namespace cas3_analytic;
+  const Bumpy_radius bumpy{0.02, 10, 0, 0.4, 1, 0, 0};
+  return {
+    {"ellipsoid", false, [](std::size_t n) { return ellipsoid_truth_sample<Point, Vector>(n, 1, 0.7, 0.4); }},
+    {"torus", false, [](std::size_t n) { return torus_truth_sample<Point, Vector>(n, 1, 0.35); }},
+    {"bumpy_sphere", false,
+     [bumpy](std::size_t n) { return bumpy_sphere_truth_sample<Point, Vector>(n, bumpy); }},
+    {"ellipsoid_cap", false,
+     [](std::size_t n) { return ellipsoid_truth_sample<Point, Vector>(n, 1, 0.7, 0.4, 0.1); }},
+    {"torus_patch", false,
+     [](std::size_t n) { return torus_truth_sample<Point, Vector>(n, 1, 0.35, M_PI, 0, M_PI); }},
+    {"bumpy_cap", false,
+     [bumpy](std::size_t n) { return bumpy_sphere_truth_sample<Point, Vector>(n, bumpy, 0.2); }},
+    {"plane", true, [](std::size_t n) { return square_truth_sample<Point, Vector>(n, 1); }},
+  };
+}
+
+const std::vector<std::string> extra_cases = {"fine_bumps", "dent_bumps"};
+const std::vector<std::string> scan_cases = {"kitten", "oni", "ball", "building"};
+const std::vector<std::string> scan_files = {"kitten.xyz", "oni.pwn", "ball.ply", "building.ply"};
+
+Judge judge_of(const Sample& s, bool planar, bool flip_allowed)
+{
+  Judge j;
+  j.planar = planar;
+  j.flip_allowed = flip_allowed;
+  j.spacing = s.spacing;
+  if(!planar)
+  {
+    j.H_scale = median_abs(s.mean_curvature);
+    j.K_scale = median_abs(s.gaussian_curvature);
+  }
+  return j;
+}
+
+// Runs the pipeline and the peer on `s`, one row per truth in `truths`
+// (the first is the sample itself).
+void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truths,
+                        const std::vector<std::string>& names, bool planar, double noise, const Options& o,
+                        std::vector<Row>& rows, std::ostream* csv)
+{
+  std::vector<Layer> layers;
+  std::string failure;
+  const std::clock_t start = std::clock();
+  try
+  {
+    layers = run_pipeline(s.points, o.normals ? s.normals : std::vector<Vector>(), o.rings);
+  }
+  catch(const std::exception& e)
+  {
+    failure = std::string("pipeline failed: ") + e.what();
+  }
+  const double seconds = cpu_seconds_since(start);
+  std::vector<std::size_t> all(s.points.size());
+  for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  for(std::size_t t = 0; t < truths.size(); ++t)
+  {
+    const Sample& truth = *truths[t];
+    const Judge judge = judge_of(truth, planar, !truth.closed && !o.normals);
+    Row row;
+    row.name = names[t];
+    row.n = s.points.size();
+    row.noise = noise_label(noise);
+    row.rings = join(o.rings);
+    row.planar = planar;
+    row.seconds = seconds;
+    row.note = failure;
+    if(o.normals && !pipeline_uses_input_normals)
+      row.note += (row.note.empty() ? "" : "; ") + std::string("true normals given but not used");
+    double best = std::numeric_limits<double>::infinity();
+    for(const Layer& layer : layers)
+    {
+      const Accuracy a = accuracy(layer.normal, layer.H, layer.K, all, truth, judge);
+      const double key = std::isfinite(a.H_med) ? a.H_med : std::numeric_limits<double>::max();
+      if(row.best_ring == 0 || key < best)
+      {
+        best = key;
+        row.best_ring = layer.ring;
+        row.coverage = a.coverage;
+        row.orientation = a.orientation;
+        row.H_med = a.H_med;
+        row.H_p90 = a.H_p90;
+        row.K_med = a.K_med;
+        row.K_p90 = a.K_p90;
+        row.components = layer.components;
+      }
+    }
+    if(o.jet)
+    {
+      const std::vector<int> ks = noise > 0 ? std::vector<int>{60, 120, 240, 480} : std::vector<int>{12, 24};
+      Judge jet_judge = judge;
+      jet_judge.flip_allowed = false;  // its sign comes from the truth
+      double jet_best = std::numeric_limits<double>::infinity();
+      for(const Jet_accuracy& j : jet_accuracy(s, truth, ks, o.jet_samples, jet_judge))
+        if(row.jet_k == 0 || j.accuracy.H_med < jet_best)
+        {
+          jet_best = j.accuracy.H_med;
+          row.jet_k = j.k;
+          row.jet_H_med = j.accuracy.H_med;
+          row.jet_H_p90 = j.accuracy.H_p90;
+          row.jet_K_med = j.accuracy.K_med;
+        }
+    }
+    print_row(row);
+    if(csv)
+      write_csv_row(*csv, row);
+    rows.push_back(row);
+  }
+}
+
+// x y z nx ny nz per line (.xyz, .pwn), or an ascii PLY with x y z nx ny nz.
+bool read_oriented_points(const std::string& file, std::vector<Point>& points, std::vector<Vector>& normals)
+{
+  std::ifstream in(file);
+  if(!in)
+    return false;
+  std::string line;
+  std::vector<int> column(6, -1);
+  std::size_t properties = 6;
+  const bool ply = file.size() > 4 && file.substr(file.size() - 4) == ".ply";
+  if(ply)
+  {
+    properties = 0;
+    const char* names[6] = {"x", "y", "z", "nx", "ny", "nz"};
+    bool in_vertex = false;
+    while(std::getline(in, line))
+    {
+      std::istringstream s(line);
+      std::string word, type, name;
+      s >> word;
+      if(word == "format" && line.find("ascii") == std::string::npos)
+        return false;
+      if(word == "element")
+      {
+        s >> name;
+        in_vertex = name == "vertex";
+      }
+      if(word == "property" && in_vertex)
+      {
+        s >> type >> name;
+        for(int c = 0; c < 6; ++c)
+          if(name == names[c]) column[c] = int(properties);
+        ++properties;
+      }
+      if(word == "end_header")
+        break;
+    }
+    for(int c : column)
+      if(c < 0) return false;
+  }
+  else
+    for(int c = 0; c < 6; ++c) column[c] = c;
+  std::vector<double> v(properties);
+  while(std::getline(in, line))
+  {
+    std::istringstream s(line);
+    std::size_t read = 0;
+    while(read < properties && (s >> v[read])) ++read;
+    if(read < properties)
+    {
+      if(ply) break;  // faces or the end
+      continue;
+    }
+    points.push_back(Point(v[column[0]], v[column[1]], v[column[2]]));
+    normals.push_back(Vector(v[column[3]], v[column[4]], v[column[5]]));
+  }
+  return !points.empty();
+}
+
+void evaluate_scan(const std::string& name, const std::string& file, const Options& o, std::vector<Row>& rows,
+                   std::ostream* csv)
+{
+  std::vector<Point> points;
+  std::vector<Vector> normals;
+  if(!read_oriented_points(file, points, normals))
+  {
+    Row row;
+    row.name = name;
+    row.note = "cannot read " + file;
+    print_row(row);
+    return;
+  }
+  Sample truth;
+  truth.points = points;
+  truth.normals = normals;
+  for(int given = 1; given >= 0; --given)
+  {
+    Row row;
+    row.name = name + (given ? "[normals]" : "[xyz]");
+    row.n = points.size();
+    row.rings = join(o.rings);
+    std::vector<Layer> layers;
+    const std::clock_t start = std::clock();
+    try
+    {
+      layers = run_pipeline(points, given ? normals : std::vector<Vector>(), o.rings);
+    }
+    catch(const std::exception& e)
+    {
+      row.note = std::string("pipeline failed: ") + e.what();
+    }
+    row.seconds = cpu_seconds_since(start);
+    if(given && !pipeline_uses_input_normals)
+      row.note += (row.note.empty() ? "" : "; ") + std::string("normals given but not used");
+    Judge judge;
+    judge.flip_allowed = !given;
+    std::vector<std::size_t> all(points.size());
+    for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    // reference normals only: the best ring is the best oriented one
+    for(const Layer& layer : layers)
+    {
+      const Accuracy a = accuracy(layer.normal, layer.H, layer.K, all, truth, judge);
+      if(row.best_ring == 0 || a.orientation > row.orientation)
+      {
+        row.best_ring = layer.ring;
+        row.coverage = a.coverage;
+        row.orientation = a.orientation;
+        row.components = layer.components;
+      }
+    }
+    print_row(row);
+    if(csv)
+      write_csv_row(*csv, row);
+    rows.push_back(row);
+  }
+}
+
+// The truth of the generators against closed forms: torus (k1 = 1/r,
+// k2 = cos v / (R + r cos v)), ellipsoid (K = 1 / (a^2 b^2 c^2 s^2) and
+// H = |x^2 + y^2 + z^2 - a^2 - b^2 - c^2| / (2 a^2 b^2 c^2 s^(3/2)),
+// s = x^2/a^4 + y^2/b^4 + z^2/c^4), its area (Knud Thomsen's formula, within
+// 1.1%), and the torus area 4 pi^2 R r.
+bool check_truth()
+{
+  double worst = 0;
+  const Sample t = cas3_analytic::torus_truth_sample<Point, Vector>(2000, 1, 0.35);
+  for(std::size_t i = 0; i < t.points.size(); ++i)
+  {
+    const Point& p = t.points[i];
+    const double cos_v = (std::sqrt(p.x() * p.x() + p.y() * p.y()) - 1) / 0.35;
+    const double k1 = 1 / 0.35, k2 = cos_v / (1 + 0.35 * cos_v);
+    worst = std::max({worst, std::abs(t.mean_curvature[i] - (k1 + k2) / 2), std::abs(t.gaussian_curvature[i] - k1 * k2),
+                      std::abs(t.normals[i].squared_length() - 1)});
+  }
+  const double a = 1, b = 0.7, c = 0.4;
+  const Sample e = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(2000, a, b, c);
+  for(std::size_t i = 0; i < e.points.size(); ++i)
+  {
+    const Point& p = e.points[i];
+    const double s = p.x() * p.x() / (a * a * a * a) + p.y() * p.y() / (b * b * b * b) + p.z() * p.z() / (c * c * c * c);
+    const double K = 1 / (a * a * b * b * c * c * s * s);
+    const double H = std::abs(p.x() * p.x() + p.y() * p.y() + p.z() * p.z() - a * a - b * b - c * c) /
+                     (2 * a * a * b * b * c * c * std::pow(s, 1.5));
+    worst = std::max({worst, std::abs(e.gaussian_curvature[i] / K - 1), std::abs(e.mean_curvature[i] / H - 1)});
+  }
+  const double q = 1.6075;
+  const double thomsen =
+    4 * M_PI * std::pow((std::pow(a * b, q) + std::pow(a * c, q) + std::pow(b * c, q)) / 3, 1 / q);
+  const bool ok = worst < 1e-9 && std::abs(e.area / thomsen - 1) < 0.011 &&
+                  std::abs(t.area / (4 * M_PI * M_PI * 0.35) - 1) < 1e-12;
+  std::printf("truth check: largest error %.2g; ellipsoid area %.5f (Thomsen %.5f); torus area %.5f (exact %.5f): %s\n",
+              worst, e.area, thomsen, t.area, 4 * M_PI * M_PI * 0.35, ok ? "ok" : "FAILED");
+  return ok;
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  try
+  {
+    for(int i = 1; i < argc; ++i)
+    {
+      const std::string arg = argv[i];
+      const bool value = i + 1 < argc;
+      if(arg == "--case" && value) o.cases = parse_list<std::string>(argv[++i]);
+      else if(arg == "--sizes" && value) o.sizes = parse_list<std::size_t>(argv[++i]);
+      else if(arg == "--noise" && value) o.noises = parse_list<double>(argv[++i]);
+      else if(arg == "--rings" && value) o.rings = parse_list<int>(argv[++i]);
+      else if(arg == "--jet-samples" && value) o.jet_samples = std::stoul(argv[++i]);
+      else if(arg == "--data" && value) o.data = argv[++i];
+      else if(arg == "--csv" && value) o.csv = argv[++i];
+      else if(arg == "--large") o.large = true;
+      else if(arg == "--normals") o.normals = true;
+      else if(arg == "--no-jet") o.jet = false;
+      else if(arg == "--check-truth") return check_truth() ? EXIT_SUCCESS : EXIT_FAILURE;
+      else if(arg == "--list")
+      {
+        for(const Shape& s : grid_shapes()) std::cout << s.name << "\n";
+        for(const std::string& s : extra_cases) std::cout << s << "\n";
+        for(const std::string& s : scan_cases) std::cout << s << "\n";
+        return EXIT_SUCCESS;
+      }
+      else
+        throw std::invalid_argument("unknown option " + arg);
+    }
+    if(o.rings.empty())
+      throw std::invalid_argument("no ring size");
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "evaluate_surfaces: " << e.what() << " (see the top of evaluate_surfaces.cpp)\n";
+    return EXIT_FAILURE;
+  }
+  if(o.large && std::find(o.sizes.begin(), o.sizes.end(), std::size_t(1000000)) == o.sizes.end())
+    o.sizes.push_back(1000000);
+
+  std::ofstream csv_file;
+  std::ostream* csv = nullptr;
+  if(!o.csv.empty())
+  {
+    csv_file.open(o.csv);
+    if(!csv_file)
+    {
+      std::cerr << "evaluate_surfaces: cannot write " << o.csv << "\n";
+      return EXIT_FAILURE;
+    }
+    csv_file << csv_header;
+    csv = &csv_file;
+  }
+
+  std::printf("errors in %% of the median |true value|; '*': median |H| * spacing (plane); orientation up to one\n"
+              "global flip for open surfaces and scans without given normals; jet: CGAL Monge_via_jet_fitting\n"
+              "(degree 2/2) on %s points, k from {60,120,240,480} (noisy) or {12,24} (clean)\n",
+              o.jet_samples ? std::to_string(o.jet_samples).c_str() : "all");
+  print_header();
+  std::vector<Row> rows;
+  const cas3_benchmark::Phase total;
+
+  const std::vector<Shape> shapes = grid_shapes();
+  for(std::size_t shape_index = 0; shape_index < shapes.size(); ++shape_index)
+  {
+    const Shape& shape = shapes[shape_index];
+    if(!o.selected(shape.name))
+      continue;
+    for(std::size_t n : o.sizes)
+    {
+      const Sample clean = shape.make(n);
+      for(double r : o.noises)
+      {
+        Sample s = clean;
+        // the same noise for a case whatever else is selected
+        const unsigned seed = unsigned(1000 * shape_index + n + std::lround(1000 * r));
+        if(shape.planar && r == 0)
+          cas3_analytic::add_normal_noise(s, 1e-4, seed);
+        else
+          cas3_analytic::add_normal_noise(s, r, seed);
+        evaluate_synthetic(s, {&s}, {shape.name}, shape.planar, r, o, rows, csv);
+      }
+    }
+  }
+
+  // clean 20k details
+  {
+    cas3_analytic::Bumpy_radius fine{0.005, 40, 0, 0.4, 1, 0, 0};
+    if(o.selected("fine_bumps"))
+    {
+      const Sample s = cas3_analytic::bumpy_sphere_truth_sample<Point, Vector>(20000, fine, -INFINITY, 15);
+      evaluate_synthetic(s, {&s}, {"fine_bumps"}, false, 0, o, rows, csv);
+    }
+    if(o.selected("dent_bumps"))
+    {
+      cas3_analytic::Bumpy_radius dent = fine;
+      dent.dent_depth = 0.25;
+      dent.dent_width = 0.4;
+      Sample smooth;
+      const Sample s = cas3_analytic::bumpy_sphere_truth_sample<Point, Vector>(20000, dent, -INFINITY, 16, &smooth);
+      evaluate_synthetic(s, {&s, &smooth}, {"dent_bumps", "dent_bumps~smooth"}, false, 0, o, rows,
+                         csv);
+    }
+  }
+
+  for(std::size_t i = 0; i < scan_cases.size(); ++i)
+    if(o.selected(scan_cases[i]))
+      evaluate_scan(scan_cases[i], o.data + "/" + scan_files[i], o, rows, csv);
+
+  std::printf("total %.1f s wall\n", total.seconds());
+  return EXIT_SUCCESS;
+}
