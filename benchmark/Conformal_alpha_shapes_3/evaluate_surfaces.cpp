@@ -45,7 +45,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Search_traits_3.h>
 
 #include "cas3_analytic_surfaces.h"
@@ -84,22 +83,16 @@ struct Layer
   int components = -1;         // surface components, -1 when not reported
 };
 
-// Whether this version of the pipeline uses input normals.
-const bool pipeline_uses_input_normals = false;
-
 // The automatic scale, curvature at each ring size: what
 // multiscale_curvatures(points, scales({Scale::automatic()}).ring_sizes(rings))
-// computes, through Multiscale_curvatures to count the surface's components.
+// computes, through Multiscale_curvatures to count the surface's parts.
 std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vector<Vector>& normals,
                                 const std::vector<int>& rings)
 {
-  (void)normals;  // not taken by this version
   typedef CAS3::Multiscale_curvatures<Kernel> Analysis;
-  const Analysis analysis(points.begin(), points.end());
+  const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(normals));
   Analysis::Surface surface;
-  analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
-  auto component = surface.add_property_map<Analysis::Surface::Face_index, std::size_t>("f:component").first;
-  const int components = int(CGAL::Polygon_mesh_processing::connected_components(surface, component));
+  const int components = int(analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface).number_of_parts);
   std::vector<Layer> layers;
   for(int ring : rings)
   {
@@ -470,8 +463,6 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
     row.planar = planar;
     row.seconds = seconds;
     row.note = failure;
-    if(o.normals && !pipeline_uses_input_normals)
-      row.note += (row.note.empty() ? "" : "; ") + std::string("true normals given but not used");
     double best = std::numeric_limits<double>::infinity();
     for(const Layer& layer : layers)
     {
@@ -605,8 +596,6 @@ void evaluate_scan(const std::string& name, const std::string& file, const Optio
       row.note = std::string("pipeline failed: ") + e.what();
     }
     row.seconds = cpu_seconds_since(start);
-    if(given && !pipeline_uses_input_normals)
-      row.note += (row.note.empty() ? "" : "; ") + std::string("normals given but not used");
     Judge judge;
     judge.flip_allowed = !given;
     std::vector<std::size_t> all(points.size());
