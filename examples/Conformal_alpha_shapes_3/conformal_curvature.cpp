@@ -48,8 +48,9 @@ const char* const usage =
   "  --rings LIST     comma list of ring sizes >= 1; default 1,2\n"
   "  --estimator NAME quadric (default), euler-least-squares or paper\n"
   "  --denoise MODE   auto (default: smooth when the estimated noise exceeds\n"
-  "                   0.03 x spacing), on or off\n"
-  "  --denoise-neighbors K  neighbours of the smoothing jet fit; default 32\n"
+  "                   0.02 x spacing), on or off\n"
+  "  --denoise-neighbors K  neighbours of the smoothing jet fit; default: from\n"
+  "                   the estimated noise (24 to 64)\n"
   "  --extraction NAME front (default: one sheet per part, open or closed)\n"
   "                   or solid (the boundary of the enclosed solid)\n"
   "  --output DIR     default ./conformal_curvature_out\n"
@@ -71,7 +72,7 @@ struct Options
   std::vector<int> rings = {1, 2};
   CAS3::Curvature_estimator estimator = CAS3::QUADRIC_FIT;
   CAS3::Denoising denoising = CAS3::AUTOMATIC_DENOISING;
-  unsigned int denoising_neighbors = CAS3::default_denoising_neighbors();
+  unsigned int denoising_neighbors = 0;  // 0: as the library's plan says
   CAS3::Surface_extraction extraction = CAS3::ADVANCING_FRONT;
   std::string output = "conformal_curvature_out";
   bool quiet = false;
@@ -344,9 +345,10 @@ int run(const Options& o)
   std::unique_ptr<Analysis> analysis;
   try
   {
-    analysis = std::make_unique<Analysis>(points.begin(), points.end(),
-      CAS3::parameters::denoising(o.denoising, CAS3::parameters::denoising_neighbors(o.denoising_neighbors,
-                                  CAS3::parameters::surface_extraction(o.extraction))));
+    const auto np = CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction));
+    analysis = o.denoising_neighbors > 0
+      ? std::make_unique<Analysis>(points.begin(), points.end(), CAS3::parameters::denoising_neighbors(o.denoising_neighbors, np))
+      : std::make_unique<Analysis>(points.begin(), points.end(), np);
   }
   catch(const std::invalid_argument& e) { throw Failure(o.input + ": " + e.what()); }
   progress("built the conformal alpha shape");
@@ -355,10 +357,15 @@ int run(const Options& o)
   std::ofstream csv = output.open("curvatures.csv", false);
   csv << "point_index,x,y,z,alpha_hat,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z\n";
   std::ostringstream summary;
-  char noise[160];
-  std::snprintf(noise, sizeof noise, "noise: %.3g x spacing, %s\n", analysis->noise(),
-                analysis->denoised() ? "points smoothed before building the shape" : "no smoothing");
-  summary << o.input << ": " << points.size() << " points\n" << noise
+  char noise[200];
+  const CAS3::Denoising_plan& smoothing = analysis->denoising();
+  std::snprintf(noise, sizeof noise, "noise: %.3g x spacing (spacing %.4g)%s; ", analysis->noise().noise,
+                analysis->noise().spacing,
+                analysis->noise().noise_24 > 1.3 * analysis->noise().noise ? ", mostly unresolved detail" : "");
+  std::string smoothing_text = smoothing.passes == 0 ? std::string("no smoothing\n")
+    : "smoothed by " + std::to_string(smoothing.passes) + " jet pass(es) over "
+        + std::to_string(smoothing.neighbors) + " neighbours before building the shape\n";
+  summary << o.input << ": " << points.size() << " points\n" << noise << smoothing_text
           << "surface: " << (o.extraction == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
           << "; orientation: "
           << (analysis->has_reference_normals() ? "the majority of the input normals, per part"

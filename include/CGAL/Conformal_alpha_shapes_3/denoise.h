@@ -23,99 +23,196 @@ namespace Conformal_alpha_shapes_3 {
 /// Whether the points are smoothed before the shape is built.
 enum Denoising
 {
-  AUTOMATIC_DENOISING,  ///< when `estimate_noise()` exceeds `noise_threshold()`
+  AUTOMATIC_DENOISING,  ///< when `Noise_estimate::calls_for_denoising()`
   ALWAYS_DENOISE,
   NEVER_DENOISE
 };
 
 /// \ingroup PkgConformalAlphaShapes3Multiscale
-/// The noise level, relative to the sample spacing, above which automatic
-/// denoising smooths the points: above it the interpolating surface folds
-/// (the manual, "Noise").
-inline double noise_threshold() { return 0.03; }
+/// What `estimate_noise()` measured.
+struct Noise_estimate
+{
+  /// the mean distance from a point to its 6 nearest neighbours, measured
+  /// in the local tangent plane (so that noise does not inflate it), in model units
+  double spacing = 0;
+  /// the standard deviation of the points' offsets from a local cubic
+  /// surface fitted to 16 neighbours, as a multiple of `spacing`
+  double noise = 0;
+  /// the same with 24 neighbours: noise reads the same at both sizes,
+  /// surface detail that the sampling does not resolve grows with the size
+  double noise_24 = 0;
 
-/// \ingroup PkgConformalAlphaShapes3Multiscale
-/// The number of neighbours of the jet fit that smooths the points.
-inline unsigned int default_denoising_neighbors() { return 32; }
+  /// Whether automatic denoising smooths the points: the noise exceeds
+  /// 0.02 (below it the interpolating surface does not fold; clean samples
+  /// read 0.011 or less, even with detail) and does not grow by more than
+  /// 30% from 16 to 24 neighbours (which would mark unresolved detail).
+  bool calls_for_denoising() const { return noise > 0.02 && noise_24 <= 1.3 * noise; }
+};
+
+namespace internal {
+
+// The median of a chi-squared variable with `nu` degrees of freedom over
+// `nu` (Wilson-Hilferty): dividing the median residual variance by it makes
+// the estimate unbiased for Gaussian noise.
+inline double chi_squared_median_ratio(double nu)
+{
+  const double t = 1.0 - 2.0 / (9.0 * nu);
+  return t * t * t;
+}
+
+// The residual variance of a least-squares cubic height function over the
+// first `k` of `neighbors` (the query point first, then by distance), in
+// the PCA frame of those points, and the mean tangential distance to the
+// 6 nearest. Returns false on a degenerate neighbourhood.
+inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, int k,
+                               double& variance, double& spacing)
+{
+  const int coefficients = 10;
+  if(int(neighbors.size()) < k || k <= coefficients)
+    return false;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for(int i = 0; i < k; ++i)
+    centre += neighbors[i];
+  centre /= double(k);
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(int i = 0; i < k; ++i)
+    covariance += (neighbors[i] - centre) * (neighbors[i] - centre).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> frame(covariance);  // ascending eigenvalues
+  const Eigen::Vector3d n = frame.eigenvectors().col(0), u = frame.eigenvectors().col(2),
+                        v = frame.eigenvectors().col(1);
+  double size = 0;
+  for(int i = 0; i < k; ++i)
+    size = (std::max)(size, (neighbors[i] - neighbors[0]).norm());
+  if(!(size > 0))
+    return false;
+  Eigen::MatrixXd design(k, coefficients);
+  Eigen::VectorXd height(k);
+  for(int i = 0; i < k; ++i)
+  {
+    const Eigen::Vector3d d = (neighbors[i] - neighbors[0]) / size;  // scaled for conditioning
+    const double x = d.dot(u), y = d.dot(v);
+    height(i) = d.dot(n);
+    design.row(i) << 1, x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+  }
+  const Eigen::VectorXd residual = design * design.colPivHouseholderQr().solve(height) - height;
+  variance = residual.squaredNorm() * size * size / double(k - coefficients);
+  spacing = 0;
+  for(int i = 1; i <= 6; ++i)
+  {
+    const Eigen::Vector3d d = neighbors[i] - neighbors[0];
+    spacing += std::hypot(d.dot(u), d.dot(v));
+  }
+  spacing /= 6;
+  return true;
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
-The noise of a point sample of a surface, as a multiple of its spacing: the
-median, over up to 4096 points spread over the sample, of the residual of a
-least-squares quadric height function fitted to the 16 nearest neighbours
-(corrected for the 6 fitted coefficients), divided by the local spacing
-`sqrt(pi r^2 / 16)`, `r` being the distance to the 16th neighbour (the
-spacing `sqrt(area / n)` of a uniform sample). A quadric follows the
-surface's curvature, so a clean sample reads near 0 however curved; Gaussian
-noise of standard deviation `s` times the spacing reads about `s`.
-Returns 0 for fewer than 17 points.
+The noise of a point sample of a surface, relative to its spacing (the
+manual, "Noise"). At up to 5000 points spread over the sample, a cubic
+height function is fitted by least squares to the 16 (and 24) nearest
+points in their principal frame; the median residual variance, made
+unbiased for Gaussian noise, gives the noise. A cubic follows curvature and
+its variation, so clean samples of smooth surfaces read near 0, detailed
+ones (fine bumps a few spacings wide) 0.011 or less; Gaussian noise of
+standard deviation `r` times the spacing reads `r` within 3% for `r` up to
+0.5 (it saturates near 0.7 above). All zero for fewer than 25 points.
 */
 template <class PointRange>
-double estimate_noise(const PointRange& points)
+Noise_estimate estimate_noise(const PointRange& points)
 {
   typedef typename PointRange::value_type Point;
   typedef typename Kernel_traits<Point>::Kernel Kernel;
   typedef CGAL::Search_traits_3<Kernel> Traits;
   typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-  const unsigned int k = 16;
-  const std::size_t n = std::size_t(std::distance(points.begin(), points.end()));
-  if(n <= k)
-    return 0;
-  const typename Search::Tree tree(points.begin(), points.end());
-  const std::size_t samples = std::min<std::size_t>(n, 4096);
-  std::vector<double> ratios;
-  ratios.reserve(samples);
+  const int small = 16, large = 24;
+  Noise_estimate estimate;
+  const std::vector<Point> all(points.begin(), points.end());
+  if(all.size() <= std::size_t(large))
+    return estimate;
+  const typename Search::Tree tree(all.begin(), all.end());
+  const std::size_t samples = (std::min)(all.size(), std::size_t(5000));
+  std::vector<double> variances_small, variances_large;
+  double spacing_sum = 0;
   std::vector<Eigen::Vector3d> neighbors;
   for(std::size_t s = 0; s < samples; ++s)
   {
-    const Point& p = *std::next(points.begin(), std::ptrdiff_t(s * n / samples));
-    neighbors.clear();
-    double farthest = 0;
-    for(const auto& hit : Search(tree, p, k))
+    const Point& p = all[s * all.size() / samples];
+    neighbors.assign(1, Eigen::Vector3d(p.x(), p.y(), p.z()));
+    bool self_skipped = false;
+    for(const auto& hit : Search(tree, p, large))
     {
+      if(!self_skipped && hit.first == p)
+      {
+        self_skipped = true;
+        continue;
+      }
       neighbors.emplace_back(hit.first.x(), hit.first.y(), hit.first.z());
-      farthest = (std::max)(farthest, hit.second);
     }
-    if(neighbors.size() < k || !(farthest > 0))
+    double variance_small = 0, variance_large = 0, spacing = 0, ignored = 0;
+    if(!internal::cubic_fit_residual(neighbors, small, variance_small, spacing)
+       || !internal::cubic_fit_residual(neighbors, large, variance_large, ignored))
       continue;
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for(const Eigen::Vector3d& q : neighbors)
-      centre += q;
-    centre /= double(k);
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for(const Eigen::Vector3d& q : neighbors)
-      covariance += (q - centre) * (q - centre).transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> frame(covariance);
-    // height along the smallest eigenvector, as a quadric in the other two
-    Eigen::Matrix<double, Eigen::Dynamic, 6> design(k, 6);
-    Eigen::VectorXd height(k);
-    for(unsigned int i = 0; i < k; ++i)
-    {
-      const Eigen::Vector3d d = neighbors[i] - centre;
-      const double u = d.dot(frame.eigenvectors().col(2)), v = d.dot(frame.eigenvectors().col(1));
-      design.row(i) << 1, u, v, u * u, u * v, v * v;
-      height(i) = d.dot(frame.eigenvectors().col(0));
-    }
-    const Eigen::VectorXd residual = height - design * design.colPivHouseholderQr().solve(height);
-    const double sigma = std::sqrt(residual.squaredNorm() / double(k - 6));
-    const double spacing = std::sqrt(M_PI * farthest / double(k));  // `farthest` is a squared distance
-    ratios.push_back(sigma / spacing);
+    variances_small.push_back(variance_small);
+    variances_large.push_back(variance_large);
+    spacing_sum += spacing;
   }
-  if(ratios.empty())
-    return 0;
-  std::nth_element(ratios.begin(), ratios.begin() + std::ptrdiff_t(ratios.size() / 2), ratios.end());
-  return ratios[ratios.size() / 2];
+  if(variances_small.empty() || !(spacing_sum > 0))
+    return estimate;
+  estimate.spacing = spacing_sum / double(variances_small.size());
+  auto sigma = [](std::vector<double>& variances, int k) {
+    std::nth_element(variances.begin(), variances.begin() + std::ptrdiff_t(variances.size() / 2), variances.end());
+    return std::sqrt(variances[variances.size() / 2] / internal::chi_squared_median_ratio(double(k - 10)));
+  };
+  estimate.noise = sigma(variances_small, small) / estimate.spacing;
+  estimate.noise_24 = sigma(variances_large, large) / estimate.spacing;
+  return estimate;
 }
 
 /// \ingroup PkgConformalAlphaShapes3Multiscale
-/// Smooths `points` in place by projecting each onto a jet (a quadric) fitted
-/// to its `neighbors` nearest neighbours (CGAL's `jet_smooth_point_set()`).
-template <class PointRange>
-void denoise(PointRange& points, unsigned int neighbors = default_denoising_neighbors())
+/// How the points are smoothed: `passes` projections of every point onto a
+/// jet fitted to its `neighbors` nearest neighbours (CGAL's
+/// `jet_smooth_point_set()`); no smoothing when `passes` is 0.
+struct Denoising_plan
 {
-  if(std::size_t(std::distance(points.begin(), points.end())) > neighbors)
-    CGAL::jet_smooth_point_set<CGAL::Sequential_tag>(points, neighbors);
+  unsigned int neighbors = 0;
+  int passes = 0;
+};
+
+/*!
+\ingroup PkgConformalAlphaShapes3Multiscale
+The smoothing for a noise level `noise` (relative to the spacing): one
+pass with `max(24, 500 noise)` neighbours up to 64 neighbours, then two
+passes with `max(24, 200 noise)`, then three with 64. After one pass the
+remaining roughness is about `5 noise / neighbors` times the spacing, after
+two about `2 noise / neighbors`: the plan keeps it near 0.01, below the
+0.02 at which the surface folds, with the largest single pass first (it
+keeps detail better than repeating a small one).
+*/
+inline Denoising_plan denoising_plan(double noise)
+{
+  Denoising_plan plan;
+  if(!(noise > 0))
+    return plan;
+  if(500 * noise <= 64)
+    return Denoising_plan{(std::max)(24u, (unsigned int)std::ceil(500 * noise)), 1};
+  if(200 * noise <= 64)
+    return Denoising_plan{(std::max)(24u, (unsigned int)std::ceil(200 * noise)), 2};
+  return Denoising_plan{64, 3};
+}
+
+/// \ingroup PkgConformalAlphaShapes3Multiscale
+/// Smooths `points` in place as `plan` says.
+template <class PointRange>
+void denoise(PointRange& points, const Denoising_plan& plan)
+{
+  if(std::size_t(std::distance(points.begin(), points.end())) <= plan.neighbors)
+    return;
+  for(int pass = 0; pass < plan.passes; ++pass)
+    CGAL::jet_smooth_point_set<CGAL::Sequential_tag>(points, plan.neighbors);
 }
 
 } // namespace Conformal_alpha_shapes_3

@@ -147,12 +147,12 @@ public:
     \cgalParamNBegin{denoising}
       \cgalParamDescription{whether the points are smoothed first}
       \cgalParamType{`Denoising`}
-      \cgalParamDefault{`AUTOMATIC_DENOISING`: when the estimated noise exceeds `noise_threshold()`}
+      \cgalParamDefault{`AUTOMATIC_DENOISING`: as `denoising_plan()` says, when `Noise_estimate::calls_for_denoising()`}
     \cgalParamNEnd
     \cgalParamNBegin{denoising_neighbors}
       \cgalParamDescription{the neighbours of the smoothing jet fit}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`default_denoising_neighbors()`}
+      \cgalParamDefault{as `denoising_plan()` says for the estimated noise (at least 24)}
     \cgalParamNEnd
     \cgalParamNBegin{surface_extraction}
       \cgalParamDescription{how surfaces are extracted}
@@ -185,19 +185,23 @@ public:
     const Denoising denoising = choose_parameter(get_parameter(np, internal_np_cas3::denoising),
                                                  AUTOMATIC_DENOISING);
     m_noise = estimate_noise(points);
-    m_denoised = denoising == ALWAYS_DENOISE || (denoising == AUTOMATIC_DENOISING && m_noise > noise_threshold());
-    if(m_denoised)
-      denoise(points, choose_parameter(get_parameter(np, internal_np_cas3::denoising_neighbors),
-                                       default_denoising_neighbors()));
+    if(denoising == ALWAYS_DENOISE || (denoising == AUTOMATIC_DENOISING && m_noise.calls_for_denoising()))
+    {
+      m_denoising = denoising_plan(m_noise.noise);
+      m_denoising.passes = (std::max)(m_denoising.passes, 1);
+      m_denoising.neighbors = choose_parameter(get_parameter(np, internal_np_cas3::denoising_neighbors),
+                                               (std::max)(m_denoising.neighbors, 24u));
+      denoise(points, m_denoising);
+    }
     m_shape.make_conformal_alpha_shape(points.begin(), points.end(), parameters::local_scale_estimator(
       choose_parameter(get_parameter(np, internal_np_cas3::local_scale_estimator), NOISE_ROBUST_POLE_DISTANCE)));
   }
 
   const Shape& shape() const { return m_shape; }
-  /// the noise of the input points, as a multiple of their spacing (`estimate_noise()`)
-  double noise() const { return m_noise; }
-  /// whether the shape was built on smoothed points
-  bool denoised() const { return m_denoised; }
+  /// the noise of the input points (`estimate_noise()`)
+  const Noise_estimate& noise() const { return m_noise; }
+  /// how the points were smoothed before the shape was built (`passes` is 0 when they were not)
+  const Denoising_plan& denoising() const { return m_denoising; }
   /// how surfaces are extracted
   Surface_extraction extraction() const { return m_extraction; }
   /// whether reference normals orient the surfaces
@@ -301,8 +305,8 @@ private:
   Shape m_shape;
   Surface_extraction m_extraction = ADVANCING_FRONT;
   std::vector<Vector> m_reference_normals;
-  double m_noise = 0;
-  bool m_denoised = false;
+  Noise_estimate m_noise;
+  Denoising_plan m_denoising;
   mutable double m_suggested = -1;
 };
 
