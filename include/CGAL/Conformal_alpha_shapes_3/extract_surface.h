@@ -83,10 +83,11 @@ scan one sheet with a border, not a two-sided slab. Vertices the front
 cannot attach are left off the surface (`number_of_points_off_surface`).
 
 Orientation (the manual, "Orientation"): with `reference_normals`, every
-part faces the side that the majority of the reference normals at its
-vertices point to; without, a closed part points out of the volume it
-encloses and an open part away from the centre of the surface's vertices,
-so that the pieces of one scan agree.
+sheet faces the side that the majority of the reference normals at its
+vertices point to; without, a closed sheet points out of the volume it
+encloses and an open sheet away from the centre of the surface's vertices.
+Parts that the front grew separately but that meet along border edges are
+one sheet, oriented alike, so that the pieces of one scan agree.
 
 Faces and vertices are added to `pmesh`, which is usually empty.
 

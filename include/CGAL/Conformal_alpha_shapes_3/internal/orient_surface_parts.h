@@ -152,9 +152,11 @@ inline Soup_sheets soup_sheets(const Advancing_front_soup& soup, const Soup_part
 // rule of the manual says ("Orientation"):
 // - with reference normals (a scanner's), each sheet agrees with the
 //   majority of the reference normals at its vertices;
-// - without, a closed sheet points out of the volume it encloses, and an
-//   open sheet away from the centre of the surface (the side a single view
-//   was taken from, for a cap; outwards, for a building's facades).
+// - without, the cone that the sheet spans from the centre of the surface's
+//   vertices has positive volume: for a closed sheet that is the volume it
+//   encloses, wherever the centre, so it points outwards; an open sheet
+//   points away from the centre (outwards, for a single view of a convex
+//   object or a building's facades).
 // `point(s)` gives the position of soup vertex `s`, `reference(s)` its
 // reference normal.
 template <class Vector, class PointOf, class ReferenceOf>
@@ -163,8 +165,7 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
                                    const ReferenceOf& reference, bool has_reference)
 {
   std::vector<double> vote(sheets.size(), 0.0);
-  // the centre of the soup's vertices: the origin of the volume and of the
-  // away-from-the-centre rule (and a guard against cancellation)
+  // the centre of the soup's vertices: the apex of the cones
   Vector centre(0, 0, 0);
   for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
     centre = centre + (point(s) - CGAL::ORIGIN);
@@ -189,10 +190,8 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
         vote[sheet] += d > 0 ? sign : (d < 0 ? -sign : 0.0);
       }
     }
-    else if(sheets.closed[sheet])
-      vote[sheet] += sign * CGAL::to_double(p0 * CGAL::cross_product(p1, p2));  // six times the signed volume
     else
-      vote[sheet] += sign * CGAL::to_double(area_normal * ((p0 + p1 + p2) / 3.0));
+      vote[sheet] += sign * CGAL::to_double(area_normal * p0);  // six times the signed cone volume
   }
   std::vector<char> reverse(parts.size(), 0);
   for(std::size_t p = 0; p < parts.size(); ++p)

@@ -1,23 +1,29 @@
-// Tests of extract_boundary_surface and suggest_alpha: closed oriented
-// manifolds of the right genus and volume on analytic samples, the share of
-// points on the surface on noisy samples and real scans, the paper's central
-// claim against every global alpha, and bad input.
-#define BOOST_TEST_MODULE test_extract_boundary_surface
+// Tests of the surfaces: extract_surface and suggest_scale (one oriented
+// sheet per part of the sampled surface, on clean, noisy and open samples,
+// following input normals), the noise estimate; extract_boundary_surface and
+// suggest_alpha (closed oriented manifolds of the right genus and volume on
+// analytic samples, the share of points on the surface on noisy samples and
+// real scans, the paper's central claim against every global alpha), and
+// bad input.
+#define BOOST_TEST_MODULE test_extract_surface
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shape_3.h>
 #include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/read_points.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "cas3_analytic_surfaces.h"
 #include "cas3_test_shapes.h"
 
 #include <boost/mpl/list.hpp>
@@ -300,4 +306,178 @@ BOOST_AUTO_TEST_CASE(degenerate_scales_and_shapes)
   report = CAS3::extract_boundary_surface(one, CAS3::suggest_alpha(one), four);
   BOOST_TEST(report.number_of_faces == 4u);
   BOOST_TEST(PMP::volume(four) == 1.0 / 6.0, boost::test_tools::tolerance(1e-12));
+}
+
+// ---------------------------------------------------------------------------
+// extract_surface, suggest_scale and the pipeline's noise handling
+
+namespace {
+
+typedef K::Vector_3 Vector;
+typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
+typedef CAS3::Multiscale_curvatures<K> Analysis;
+
+// Coverage and orientation at the automatic scale, through the pipeline.
+struct Sheet_facts
+{
+  CAS3::Surface_report report;
+  double coverage = 0;     // share of points with a normal
+  double agreement = 0;    // share of those whose normal agrees with `truth`
+};
+
+Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vector>& truth,
+                        const std::vector<Vector>& given_normals = std::vector<Vector>())
+{
+  const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(given_normals));
+  Analysis::Surface surface;
+  Sheet_facts facts;
+  facts.report = analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+  BOOST_TEST(CGAL::is_valid_polygon_mesh(surface));
+  BOOST_TEST(facts.report.number_of_faces == surface.number_of_faces());
+  const auto curvatures = analysis.estimate_curvatures(surface, 1);
+  std::size_t covered = 0, agree = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(curvatures[i].on_surface)
+    {
+      ++covered;
+      agree += curvatures[i].normal * truth[i] > 0 ? 1 : 0;
+    }
+  facts.coverage = double(covered) / double(points.size());
+  facts.agreement = covered == 0 ? 0 : double(agree) / double(covered);
+  BOOST_TEST_MESSAGE("noise " << analysis.noise().noise << ", smoothing passes " << analysis.denoising().passes
+                     << ", parts " << facts.report.number_of_parts << " (" << facts.report.number_of_closed_parts
+                     << " closed), coverage " << facts.coverage << ", agreement " << facts.agreement);
+  return facts;
+}
+
+} // namespace
+
+// Every vertex of the advancing-front surface is its input point, the mesh
+// is a valid oriented manifold, and on clean closed samples nearly every
+// point is on one outward sheet.
+BOOST_AUTO_TEST_CASE(advancing_front_surface_on_clean_closed_samples)
+{
+  for(const Sample& s : {cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4),
+                         cas3_analytic::torus_truth_sample<Point, Vector>(20000, 1.0, 0.35)})
+  {
+    const Cas cas(s.points.begin(), s.points.end());
+    Surface_mesh mesh;
+    auto input_index = mesh.add_property_map<Surface_mesh::Vertex_index, std::size_t>("v:input_index").first;
+    const double a = CAS3::suggest_scale(cas);
+    const CAS3::Surface_report report =
+      CAS3::extract_surface(cas, a, mesh, CAS3::parameters::vertex_input_index_map(input_index));
+    BOOST_TEST(CGAL::is_valid_polygon_mesh(mesh));
+    BOOST_TEST(CGAL::is_triangle_mesh(mesh));
+    BOOST_TEST(report.number_of_faces == mesh.number_of_faces());
+    BOOST_TEST(report.number_of_vertices == mesh.number_of_vertices());
+    BOOST_TEST(report.number_of_parts == 1u);
+    BOOST_TEST(report.fraction_of_points_on_surface() >= 0.995);
+    std::size_t wrong_index = 0, outward = 0;
+    auto normal = get(CGAL::dynamic_vertex_property_t<Vector>(), mesh);
+    PMP::compute_vertex_normals(mesh, normal);
+    for(auto v : mesh.vertices())
+    {
+      wrong_index += mesh.point(v) == s.points[input_index[v]] ? 0 : 1;
+      outward += get(normal, v) * s.normals[input_index[v]] > 0 ? 1 : 0;
+    }
+    BOOST_TEST(wrong_index == 0u);
+    BOOST_TEST(double(outward) / double(mesh.number_of_vertices()) >= 0.999);
+    // no facet above the scale
+    Surface_mesh none;
+    BOOST_TEST(CAS3::extract_surface(cas, 0.0, none).empty());
+  }
+}
+
+// Noise of 0.1 and 0.3 spacings along the normal: the points are smoothed,
+// and the surface is one outward sheet (today's solid boundary had an inner
+// wall there, facing half of the points inwards).
+BOOST_AUTO_TEST_CASE(noisy_closed_surface_is_one_outward_sheet)
+{
+  for(double noise : {0.1, 0.3})
+  {
+    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4);
+    cas3_analytic::add_normal_noise(s, noise, 7);
+    BOOST_TEST_CONTEXT("noise " << noise)
+    {
+      const Sheet_facts facts = sheet_facts(s.points, s.normals);
+      BOOST_TEST(facts.coverage >= 0.98);
+      BOOST_TEST(facts.agreement >= 0.99);
+    }
+  }
+}
+
+// A single view of a surface (a cap), clean and noisy: one consistently
+// oriented sheet with a border, not a two-sided slab.
+BOOST_AUTO_TEST_CASE(open_cap_is_one_consistent_sheet)
+{
+  for(double noise : {0.0, 0.1})
+  {
+    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4, 0.1);
+    cas3_analytic::add_normal_noise(s, noise, 8);
+    BOOST_TEST_CONTEXT("noise " << noise)
+    {
+      const Sheet_facts facts = sheet_facts(s.points, s.normals);
+      BOOST_TEST(facts.report.number_of_open_parts() >= 1u);
+      BOOST_TEST(facts.coverage >= 0.97);
+      BOOST_TEST((std::max)(facts.agreement, 1 - facts.agreement) >= 0.99);
+    }
+  }
+}
+
+// Given normals decide the orientation, even against the default rule
+// (here: the cap given inward normals; the kitten scan with its own).
+BOOST_AUTO_TEST_CASE(orientation_follows_input_normals)
+{
+  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4, 0.1);
+  cas3_analytic::add_normal_noise(s, 0.1, 9);
+  std::vector<Vector> inward;
+  for(const Vector& n : s.normals)
+    inward.push_back(-n);
+  const Sheet_facts facts = sheet_facts(s.points, inward, inward);
+  BOOST_TEST(facts.report.oriented_by_reference_normals);
+  BOOST_TEST(facts.agreement >= 0.99);
+
+  if(!shared_data_available())
+    return;
+  std::vector<std::pair<Point, Vector> > kitten;
+  BOOST_REQUIRE(CGAL::IO::read_points(std::string(CAS3_SHARED_DATA) + "/kitten.xyz", std::back_inserter(kitten),
+                                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<std::pair<Point, Vector> >())
+                                        .normal_map(CGAL::Second_of_pair_property_map<std::pair<Point, Vector> >())));
+  std::vector<Point> points;
+  std::vector<Vector> normals;
+  for(const auto& pn : kitten)
+  {
+    points.push_back(pn.first);
+    normals.push_back(pn.second);
+  }
+  const Sheet_facts scan = sheet_facts(points, normals, normals);
+  BOOST_TEST(scan.coverage >= 0.97);
+  BOOST_TEST(scan.agreement >= 0.97);
+}
+
+// The noise estimate reads Gaussian noise along the normal and leaves clean
+// detail (fine bumps) alone.
+BOOST_AUTO_TEST_CASE(noise_estimate)
+{
+  cas3_analytic::Bumpy_radius bumps;
+  bumps.amplitude = 0.005;
+  bumps.frequency = 40;
+  const Sample clean = cas3_analytic::bumpy_sphere_truth_sample<Point, Vector>(20000, bumps);
+  const CAS3::Noise_estimate detail = CAS3::estimate_noise(clean.points);
+  BOOST_TEST_MESSAGE("clean bumpy sphere: noise " << detail.noise << ", spacing " << detail.spacing);
+  BOOST_TEST(detail.noise < 0.02);
+  BOOST_TEST(!detail.calls_for_denoising());
+  for(double r : {0.05, 0.1, 0.3})
+  {
+    Sample s = cas3_analytic::torus_truth_sample<Point, Vector>(20000, 1.0, 0.35);
+    cas3_analytic::add_normal_noise(s, r, 10);
+    const CAS3::Noise_estimate e = CAS3::estimate_noise(s.points);
+    BOOST_TEST_CONTEXT("noise " << r)
+    {
+      BOOST_TEST(std::abs(e.noise / r - 1) < 0.1);
+      BOOST_TEST(std::abs(e.spacing / s.spacing - 1) < 0.1);
+      BOOST_TEST(e.calls_for_denoising());
+    }
+  }
+  BOOST_TEST(CAS3::estimate_noise(std::vector<Point>(10, Point(0, 0, 0))).noise == 0);
 }
