@@ -6,6 +6,7 @@
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/solid_labeling.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
+#include <CGAL/Conformal_alpha_shapes_3/surface_counts.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -21,12 +22,8 @@ namespace Conformal_alpha_shapes_3 {
 
 /// \ingroup PkgConformalAlphaShapes3Surface
 /// What `extract_boundary_surface()` did.
-struct Boundary_surface_report
+struct Boundary_surface_report : Surface_counts
 {
-  /// faces written to the mesh
-  std::size_t number_of_faces = 0;
-  /// vertices written to the mesh
-  std::size_t number_of_vertices = 0;
   /// finite facets that are `REGULAR` or `SINGULAR` at the scale
   std::size_t number_of_candidate_facets = 0;
   /// candidate facets left out of the surface
@@ -39,20 +36,6 @@ struct Boundary_surface_report
   std::size_t number_of_sculpted_cells = 0;
   /// vertices where the surface pinches, written once per umbrella of faces
   std::size_t number_of_pinched_vertices = 0;
-  /// input points whose vertex is not on the surface (duplicates counted)
-  std::size_t number_of_points_off_surface = 0;
-  /// input points of the shape
-  std::size_t number_of_input_points = 0;
-
-  /// `true` when the surface has no face (for example, below every facet value)
-  bool empty() const { return number_of_faces == 0; }
-  /// the share of input points on the surface, in `[0, 1]`
-  double fraction_of_points_on_surface() const
-  {
-    return number_of_input_points == 0
-             ? 0.0
-             : double(number_of_input_points - number_of_points_off_surface) / double(number_of_input_points);
-  }
 };
 
 namespace internal {
@@ -65,11 +48,7 @@ std::size_t number_of_points_off_boundary(const Cas& cas, const Solid_labeling<C
   for(const typename Cas::Facet& f : solid.boundary())
     for(int k = 1; k < 4; ++k)
       on[f.first->vertex((f.second + k) & 3)->vertex_index()] = 1;
-  std::size_t off = 0;
-  for(typename Cas::Vertex_handle v : cas.finite_vertex_handles())
-    if(!on[v->vertex_index()])
-      off += std::size_t(cas.input_indices(v).size());
-  return off;
+  return number_of_points_off(cas, on);
 }
 
 } // namespace internal

@@ -7,6 +7,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/orient_surface_parts.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
+#include <CGAL/Conformal_alpha_shapes_3/surface_counts.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -33,36 +34,19 @@ enum Surface_extraction
 
 /// \ingroup PkgConformalAlphaShapes3Surface
 /// What `extract_surface()` did.
-struct Surface_report
+struct Surface_report : Surface_counts
 {
-  /// faces written to the mesh
-  std::size_t number_of_faces = 0;
-  /// vertices written to the mesh
-  std::size_t number_of_vertices = 0;
-  /// connected parts of the surface
+  /// connected sheets of the surface
   std::size_t number_of_parts = 0;
-  /// parts without border
+  /// sheets without border
   std::size_t number_of_closed_parts = 0;
-  /// parts reversed to follow the orientation rule
+  /// pieces grown separately and reversed to follow the orientation rule
   std::size_t number_of_reversed_parts = 0;
-  /// input points whose vertex is not on the surface (duplicates counted)
-  std::size_t number_of_points_off_surface = 0;
-  /// input points of the shape
-  std::size_t number_of_input_points = 0;
   /// whether reference normals decided the orientation
   bool oriented_by_reference_normals = false;
 
-  /// `true` when the surface has no face (for example, below every facet value)
-  bool empty() const { return number_of_faces == 0; }
-  /// parts with a border
+  /// sheets with a border
   std::size_t number_of_open_parts() const { return number_of_parts - number_of_closed_parts; }
-  /// the share of input points on the surface, in `[0, 1]`
-  double fraction_of_points_on_surface() const
-  {
-    return number_of_input_points == 0
-             ? 0.0
-             : double(number_of_input_points - number_of_points_off_surface) / double(number_of_input_points);
-  }
 };
 
 /*!
@@ -195,11 +179,7 @@ Surface_report extract_surface(const ConformalAlphaShape& cas, double a, Polygon
   std::vector<char> on(cas.number_of_vertices(), 0);
   for(std::size_t s : soup.shape_vertex)
     on[s] = 1;
-  std::size_t off = 0;
-  for(typename Cas::Vertex_handle v : cas.finite_vertex_handles())
-    if(!on[v->vertex_index()])
-      off += std::size_t(cas.input_indices(v).size());
-  report.number_of_points_off_surface = off;
+  report.number_of_points_off_surface = internal::number_of_points_off(cas, on);
   return report;
 }
 

@@ -232,10 +232,7 @@ public:
     const Boundary_surface_report solid =
       extract_boundary_surface(m_shape, alpha, surface, parameters::vertex_input_index_map(input_index));
     Surface_report report;
-    report.number_of_faces = solid.number_of_faces;
-    report.number_of_vertices = solid.number_of_vertices;
-    report.number_of_points_off_surface = solid.number_of_points_off_surface;
-    report.number_of_input_points = solid.number_of_input_points;
+    static_cast<Surface_counts&>(report) = solid;
     auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), surface);
     report.number_of_parts = CGAL::Polygon_mesh_processing::connected_components(surface, part);
     report.number_of_closed_parts = report.number_of_parts;  // the boundary of a solid is closed
