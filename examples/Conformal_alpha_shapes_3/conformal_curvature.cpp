@@ -297,7 +297,8 @@ namespace cleanup {
 char temporary_dir[4096] = "";
 char files[64][4096];
 volatile std::sig_atomic_t number_of_files = 0;
-char created_dir[4096] = "";
+char created_dirs[16][4096];  // the directories this run created, deepest first
+volatile std::sig_atomic_t number_of_created_dirs = 0;
 
 extern "C" void on_fatal_signal(int sig)
 {
@@ -305,8 +306,8 @@ extern "C" void on_fatal_signal(int sig)
     ::unlink(files[i]);
   if(temporary_dir[0])
     ::rmdir(temporary_dir);
-  if(created_dir[0])
-    ::rmdir(created_dir);
+  for(int i = 0; i < number_of_created_dirs; ++i)
+    ::rmdir(created_dirs[i]);
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
@@ -329,15 +330,21 @@ public:
       throw Failure("cannot create the output directory " + dir + ": a file of that name exists");
     if(!existed)
     {
-      // remember the first level we create, to remove it on failure
-      fs::path first = fs::absolute(m_dir, error);
-      while(first.has_parent_path() && first.parent_path() != first && !fs::exists(first.parent_path(), error))
-        first = first.parent_path();
+      // remember the levels we create, to remove them on failure
+      std::vector<fs::path> created;
+      for(fs::path p = fs::absolute(m_dir, error); !p.empty() && !fs::exists(p, error); p = p.parent_path())
+      {
+        created.push_back(p);
+        if(p == p.parent_path())
+          break;
+      }
       fs::create_directories(m_dir, error);
       if(!fs::is_directory(m_dir, error))
         throw Failure("cannot create the output directory " + dir);
-      m_created = first;
-      cleanup::copy(cleanup::created_dir, m_created.string());
+      m_created = created.empty() ? fs::path() : created.back();
+      for(std::size_t i = 0; i < created.size() && i < 16; ++i)
+        cleanup::copy(cleanup::created_dirs[i], created[i].string());
+      cleanup::number_of_created_dirs = int((std::min)(created.size(), std::size_t(16)));
     }
     // probe: can we create and rename files there?
     const fs::path probe = m_dir / (".conformal_curvature_probe_" + std::to_string(::getpid()));
@@ -373,7 +380,7 @@ public:
     fs::remove_all(m_temporary, ignored);
     if(!m_committed)
       remove_created();
-    cleanup::created_dir[0] = 0;
+    cleanup::number_of_created_dirs = 0;
   }
   std::ofstream open(const std::string& name, bool binary)
   {
@@ -474,6 +481,10 @@ int run(const Options& o)
       CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
       if(!CGAL::IO::write_PLY(ply, written) || !ply)
         throw Failure("cannot write into the output directory " + o.output);
+      ply.close();
+      // test hook: a crash after the first file, to check the clean-up
+      if(std::getenv("CONFORMAL_CURVATURE_TEST_CRASH") != nullptr)
+        std::raise(SIGSEGV);
       append_csv_rows(csv, points, alpha, k, curvatures, input.is_outlier);
       if(!csv)
         throw Failure("cannot write into the output directory " + o.output);

@@ -13,11 +13,13 @@
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "cas3_test_meshes.h"
 #include "cas3_test_shapes.h"
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -396,4 +399,195 @@ BOOST_AUTO_TEST_CASE(mixed_huge_and_tiny_coordinates)
   BOOST_TEST((n.outliers == std::vector<std::size_t>{1000, 1001}));
   Cas cas(n.points.begin(), n.points.end());
   BOOST_TEST(cas.number_of_input_points() == 1000u);
+}
+
+// ---------------------------------------------------------------------------
+// estimate_vertex_curvatures on degenerate meshes
+
+namespace {
+
+struct Mesh_estimate
+{
+  std::size_t undefined;
+  std::vector<double> H;
+  std::vector<bool> border;
+};
+
+Mesh_estimate estimate(const Mesh& mesh, int rings)
+{
+  auto h = mesh.property_map<Mesh::Vertex_index, double>("v:H");
+  Mesh& m = const_cast<Mesh&>(mesh);
+  auto H = h.second ? h.first : m.add_property_map<Mesh::Vertex_index, double>("v:H", 0).first;
+  Mesh_estimate e;
+  e.undefined = CAS3::estimate_vertex_curvatures(mesh, CAS3::parameters::vertex_mean_curvature_map(H,
+                                                      CAS3::parameters::ring_size(rings)));
+  for(auto v : mesh.vertices())
+  {
+    e.H.push_back(H[v]);
+    e.border.push_back(mesh.is_border(v));
+  }
+  return e;
+}
+
+// Reads an OFF polygon soup that may be non-manifold into a Surface_mesh,
+// the CGAL way: orient_polygon_soup() duplicates non-manifold vertices.
+Mesh mesh_from_off(const std::string& off)
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  std::istringstream in(off);
+  BOOST_REQUIRE(CGAL::IO::read_OFF(in, points, polygons));
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  return mesh;
+}
+
+std::string off_of(const std::vector<Point>& points, const std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::ostringstream out;
+  out.precision(17);
+  out << "OFF\n" << points.size() << " " << polygons.size() << " 0\n";
+  for(const Point& p : points)
+    out << p << "\n";
+  for(const auto& f : polygons)
+    out << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
+  return out.str();
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(non_manifold_vertex_two_spheres_touching)
+{
+  // two unit spheres touching at one shared vertex (non-manifold in the OFF
+  // file); after the soup is oriented each has its own copy of the vertex,
+  // and every vertex gets the sphere's curvature
+  Mesh one;
+  cas3_test::icosphere<Mesh, Point>(3, 1.0, one);
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  CGAL::Polygon_mesh_processing::polygon_mesh_to_polygon_soup(one, points, polygons);
+  const std::size_t n = points.size();
+  const Point touch = points[0];
+  // the mirror image through the shared vertex 0 (a point reflection turns
+  // orientation over: the faces are reversed)
+  for(std::size_t i = 1; i < n; ++i)
+    points.push_back(Point(2 * touch.x() - points[i].x(), 2 * touch.y() - points[i].y(), 2 * touch.z() - points[i].z()));
+  const std::size_t faces = polygons.size();
+  for(std::size_t f = 0; f < faces; ++f)
+  {
+    std::vector<std::size_t> g = polygons[f];
+    for(std::size_t& i : g)
+      i = (i == 0) ? 0 : i + n - 1;
+    std::swap(g[1], g[2]);
+    polygons.push_back(g);
+  }
+  const Mesh mesh = mesh_from_off(off_of(points, polygons));
+  BOOST_TEST(points.size() == 2 * n - 1);
+  BOOST_TEST(mesh.number_of_vertices() == 2 * n);  // the shared vertex was duplicated
+  const Mesh_estimate e = estimate(mesh, 1);
+  BOOST_TEST(e.undefined == 0u);
+  for(double h : e.H)
+    BOOST_TEST(std::abs(h - 1) < 0.02);
+}
+
+BOOST_AUTO_TEST_CASE(non_manifold_edge_three_flat_pages)
+{
+  // three flat quads sharing one edge (a non-manifold edge): after the soup
+  // is oriented, three flat sheets with borders: curvature 0 wherever defined,
+  // and the return value counts the rest
+  std::vector<Point> points = {Point(0, 0, 0), Point(0, 0, 1)};
+  std::vector<std::vector<std::size_t> > polygons;
+  for(int page = 0; page < 3; ++page)
+  {
+    const double a = 2 * M_PI * page / 3;
+    const std::size_t base = points.size();
+    for(int r = 1; r <= 3; ++r)
+      for(int z = 0; z <= 1; ++z)
+        points.push_back(Point(r * std::cos(a), r * std::sin(a), z));
+    std::size_t previous[2] = {0, 1};
+    for(int r = 0; r < 3; ++r)
+    {
+      const std::size_t next[2] = {base + 2 * std::size_t(r), base + 2 * std::size_t(r) + 1};
+      polygons.push_back({previous[0], next[0], next[1]});
+      polygons.push_back({previous[0], next[1], previous[1]});
+      previous[0] = next[0];
+      previous[1] = next[1];
+    }
+  }
+  const Mesh mesh = mesh_from_off(off_of(points, polygons));
+  BOOST_TEST(mesh.number_of_faces() == 18u);
+  BOOST_TEST(mesh.number_of_vertices() > points.size());  // the shared edge was split
+  for(int rings : {1, 2})
+  {
+    const Mesh_estimate e = estimate(mesh, rings);
+    std::size_t nan = 0;
+    for(double h : e.H)
+    {
+      if(std::isnan(h)) { ++nan; continue; }
+      BOOST_TEST(std::abs(h) < 1e-9);
+    }
+    BOOST_TEST(nan == e.undefined);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(border_vertices_of_a_hemisphere)
+{
+  // the lower half of a unit icosphere removed: border vertices are
+  // estimated one-sided, and still see the sphere
+  Mesh mesh;
+  cas3_test::icosphere<Mesh, Point>(3, 1.0, mesh);
+  std::vector<Mesh::Face_index> lower;
+  for(auto f : mesh.faces())
+  {
+    double z = 0;
+    for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      z += mesh.point(v).z();
+    if(z < -0.05)
+      lower.push_back(f);
+  }
+  for(auto f : lower)
+    CGAL::Euler::remove_face(mesh.halfedge(f), mesh);
+  mesh.collect_garbage();
+  for(int rings : {1, 2})
+  {
+    const Mesh_estimate e = estimate(mesh, rings);
+    BOOST_TEST(e.undefined == 0u);  // every vertex defined, border ones too
+    std::size_t border = 0;
+    double worst[2] = {0, 0};
+    std::vector<double> error;
+    for(std::size_t i = 0; i < e.H.size(); ++i)
+    {
+      border += e.border[i] ? 1 : 0;
+      BOOST_REQUIRE(std::isfinite(e.H[i]));
+      error.push_back(std::abs(e.H[i] - 1));
+      worst[e.border[i] ? 1 : 0] = std::max(worst[e.border[i] ? 1 : 0], error.back());
+    }
+    std::sort(error.begin(), error.end());
+    BOOST_TEST_MESSAGE("hemisphere, " << rings << " rings: median |H - 1| " << error[error.size() / 2]
+                       << ", worst inside " << worst[0] << ", worst on the border " << worst[1]);
+    BOOST_TEST(border > 20u);
+    BOOST_TEST(error[error.size() / 2] < 0.02);
+    BOOST_TEST(worst[0] < 0.15);
+    BOOST_TEST(worst[1] < 0.5);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(isolated_vertices_are_nan_and_counted)
+{
+  Mesh mesh;
+  cas3_test::icosphere<Mesh, Point>(3, 2.0, mesh);
+  for(int i = 0; i < 3; ++i)
+    mesh.point(mesh.add_vertex()) = Point(10 + i, 0, 0);
+  mesh.point(mesh.add_vertex()) = Point(0, 0, 0);  // inside the sphere, isolated all the same
+  for(int rings : {1, 3})
+  {
+    const Mesh_estimate e = estimate(mesh, rings);
+    BOOST_TEST(e.undefined == 4u);
+    for(std::size_t i = 0; i < e.H.size(); ++i)
+      if(i + 4 >= e.H.size())
+        BOOST_TEST(std::isnan(e.H[i]));
+      else
+        BOOST_TEST(std::abs(e.H[i] - 0.5) < 0.05);
+  }
 }

@@ -1,7 +1,8 @@
 // Reading point clouds for the conformal_curvature program, the benchmarks
 // and the fuzz harness (not part of the library).
 //
-// read_point_cloud(path) reads .xyz (3 or 6 numbers a line: x y z [nx ny nz]),
+// read_point_cloud(path) reads .xyz (3 or 6 numbers a line: x y z [nx ny nz],
+// optionally after a first line with the number of points, which must match),
 // .pwn (6 numbers a line), .ply (ASCII or binary, element "vertex" with
 // properties x y z and optionally nx ny nz), .off (the vertices; NOFF gives
 // normals) and .obj (the "v" lines). Normals are returned when the file has
@@ -138,13 +139,21 @@ inline Point_cloud read_xyz(const std::string& text, const std::string& name, bo
   Point_cloud cloud;
   Lines lines(text);
   std::string line;
-  std::size_t columns = 0, first_line = 0;
+  std::size_t columns = 0, first_line = 0, count = 0, count_line = 0;
   while(lines.next(line))
   {
     const std::vector<std::string> t = tokens(line);
     if(blank_or_comment(t))
       continue;
     const std::string where = name + ":" + std::to_string(lines.number());
+    if(columns == 0 && count_line == 0 && cloud.points.empty() && t.size() == 1 &&
+       t[0].find_first_not_of("0123456789") == std::string::npos && t[0].size() < 13)
+    {
+      // a first line with the number of points, as CGAL's XYZ files have
+      count = std::stoull(t[0]);
+      count_line = lines.number();
+      continue;
+    }
     if(columns == 0)
     {
       if(pwn ? t.size() != 6 : (t.size() != 3 && t.size() != 6))
@@ -164,6 +173,9 @@ inline Point_cloud read_xyz(const std::string& text, const std::string& name, bo
     if(columns == 6)
       cloud.normals.emplace_back(v[3], v[4], v[5]);
   }
+  if(count_line != 0 && count != cloud.points.size())
+    throw Read_error(name + ":" + std::to_string(count_line) + ": the first line announces " + std::to_string(count)
+                     + " points, the file holds " + std::to_string(cloud.points.size()));
   return cloud;
 }
 
@@ -298,7 +310,8 @@ inline Point_cloud read_ply(const std::string& text, const std::string& name)
     else if(t[0] == "property" && !elements.empty() && t.size() == 3 && ply_type_size(t[1]) > 0)
       elements.back().properties.push_back(Ply_property{t[2], t[1], ""});
     else if(t[0] == "property" && !elements.empty() && t.size() == 5 && t[1] == "list" &&
-            ply_type_size(t[2]) > 0 && ply_type_size(t[2]) <= 4 && ply_type_size(t[3]) > 0)
+            ply_type_size(t[2]) > 0 && ply_type_size(t[2]) <= 4 && t[2].find("float") == std::string::npos &&
+            ply_type_size(t[3]) > 0)
       elements.back().properties.push_back(Ply_property{t[4], t[3], t[2]});
     else if(t[0] == "end_header" && t.size() == 1)
       ended = true;
@@ -433,8 +446,8 @@ inline Point_cloud read_ply(const std::string& text, const std::string& name)
         if(!prop.count_type.empty())
         {
           const double c = read_value(prop.count_type, where);
-          if(c < 0)
-            throw Read_error(name + ": negative list length in element " + elements[e].name);
+          if(!(c >= 0) || c != std::floor(c) || c > double(text.size()))
+            throw Read_error(name + ": not a list length in element " + std::to_string(i) + " of " + elements[e].name);
           const std::size_t skip = std::size_t(c) * std::size_t(ply_type_size(prop.type));
           if(pos + skip > text.size())
             throw Read_error(where);
