@@ -22,6 +22,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -328,6 +329,9 @@ inline Point_cloud read_ply(const std::string& text, const std::string& name)
       vertex_element = i;
   if(vertex_element == elements.size())
     throw Read_error(name + ": the PLY header declares no vertex element");
+  for(std::size_t e = 0; e <= vertex_element; ++e)
+    if(elements[e].properties.empty() && elements[e].count > 0)
+      throw Read_error(name + ": the PLY element '" + shown(elements[e].name) + "' has no property");
   const Ply_element& vertex = elements[vertex_element];
   int slot[6] = {-1, -1, -1, -1, -1, -1};
   const char* wanted[6] = {"x", "y", "z", "nx", "ny", "nz"};
