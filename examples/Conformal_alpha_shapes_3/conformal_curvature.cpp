@@ -482,9 +482,10 @@ int run(const Options& o)
       if(!CGAL::IO::write_PLY(ply, written) || !ply)
         throw Failure("cannot write into the output directory " + o.output);
       ply.close();
-      // test hook: a crash after the first file, to check the clean-up
+      // test hook: a crash (an abort, as a failed assertion) after the first
+      // file, to check the clean-up
       if(std::getenv("CONFORMAL_CURVATURE_TEST_CRASH") != nullptr)
-        std::raise(SIGSEGV);
+        std::raise(SIGABRT);
       append_csv_rows(csv, points, alpha, k, curvatures, input.is_outlier);
       if(!csv)
         throw Failure("cannot write into the output directory " + o.output);

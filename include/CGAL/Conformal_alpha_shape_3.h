@@ -11,6 +11,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/determinant.h>
 #include <CGAL/Iterator_range.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
@@ -91,8 +92,11 @@ differences. The construction therefore rejects, with `std::invalid_argument`,
 points whose coordinates exceed `1e75` in magnitude, point sets whose
 bounding box is larger than `1e75` or smaller than `1e-75` along its longest
 axis, and, as a last guard, any point set on which a circumcentre or a
-circumradius is not a finite positive `double` (a tetrahedron far smaller
-than the bounding box, say). Such inputs crashed or gave empty surfaces
+circumradius is not a finite positive `double`, or on which the determinant
+that the kernel divides by to construct a circumcentre or a facet radius is
+0 in `double` (a tetrahedron or triangle flat to rounding, far smaller than
+the bounding box, say: exact predicates accept it, inexact constructions
+cannot handle it). Such inputs crashed or gave empty surfaces
 before. Normalise such data first: the pipeline (see the manual, section on
 input rules) recentres and rescales the points, and flags isolated far
 outliers, before building this class.
@@ -216,8 +220,10 @@ public:
     {
       // store_cell_values() found a construction out of double's range
       throw std::invalid_argument("Conformal_alpha_shape_3: a circumcentre or circumradius of the Delaunay "
-                                  "tetrahedra overflows or underflows in double (tetrahedra of very "
-                                  "different sizes); normalise the coordinates and remove far outliers");
+                                  "tetrahedra overflows or underflows in double, or divides by a "
+                                  "determinant that is 0 in double (tetrahedra or triangles flat to "
+                                  "rounding, of very different sizes); normalise the coordinates and "
+                                  "remove far outliers");
     }
     const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, centers);
     for(Vertex_handle v : this->finite_vertex_handles())
@@ -816,6 +822,11 @@ private:
           c->set_encroaches_facet(i, false);
         continue;
       }
+      if(!constructions_are_defined(c))
+      {
+        clear();
+        return centers;
+      }
       const Point& center = centers[c->cell_index()] =
         circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
                      c->vertex(2)->point(), c->vertex(3)->point());
@@ -838,6 +849,41 @@ private:
       }
     }
     return centers;
+  }
+
+  // The kernel's circumcentre of a cell and squared radius of a facet divide
+  // by a determinant of coordinate differences, computed in double. A
+  // tetrahedron or triangle flat to rounding (which the exact predicates may
+  // still see as non-degenerate, e.g. at wildly different scales) makes it 0:
+  // the construction is then undefined (NaN, or an assertion in debug
+  // builds). The same determinants, computed the same way, tell beforehand:
+  // the circumcentre of (p, q, r, s) divides by det(q - p, r - p, s - p), the
+  // squared radius of the facet (a, b, c) by det(a - c, b - c, (a - c) x (b - c)),
+  // with the facet opposite to vertex i taken as (i + 1, i + 2, i + 3) as in
+  // ordinary_alpha().
+  bool constructions_are_defined(Cell_handle c) const
+  {
+    auto usable = [](double d) { return d != 0 && std::isfinite(d); };
+    const Point& p = c->vertex(0)->point();
+    const Point& q = c->vertex(1)->point();
+    const Point& r = c->vertex(2)->point();
+    const Point& s = c->vertex(3)->point();
+    if(!usable(CGAL::determinant(q.x() - p.x(), q.y() - p.y(), q.z() - p.z(),
+                                 r.x() - p.x(), r.y() - p.y(), r.z() - p.z(),
+                                 s.x() - p.x(), s.y() - p.y(), s.z() - p.z())))
+      return false;
+    for(int i = 0; i < 4; ++i)
+    {
+      const Point& a = c->vertex((i + 1) & 3)->point();
+      const Point& b = c->vertex((i + 2) & 3)->point();
+      const Point& o = c->vertex((i + 3) & 3)->point();
+      const double ax = a.x() - o.x(), ay = a.y() - o.y(), az = a.z() - o.z();
+      const double bx = b.x() - o.x(), by = b.y() - o.y(), bz = b.z() - o.z();
+      const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+      if(!usable(CGAL::determinant(ax, ay, az, bx, by, bz, nx, ny, nz)))
+        return false;
+    }
+    return true;
   }
 
   FT m_alpha;

@@ -301,7 +301,7 @@ BOOST_AUTO_TEST_CASE(bad_input_fails_with_one_line_and_no_output)
   BOOST_TEST(left == std::vector<std::string>{"keep.txt"}, boost::test_tools::per_element());
 }
 
-// A crash (here a SIGSEGV raised by a test hook after the first file was
+// A crash (here an abort raised by a test hook after the first file was
 // written) leaves the output folder as it was, and no temporary directory.
 BOOST_AUTO_TEST_CASE(a_crash_leaves_the_output_folder_as_it_was)
 {
