@@ -3,21 +3,24 @@
 // surface per (scale, ring size) with per-vertex normal, curvatures and a
 // colour ramp of the mean curvature, and one CSV with a row per input point
 // per (scale, ring size); prints a summary table on stdout.
+#include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
-#include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/read_points.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include "cas3_read_point_cloud.h"
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -26,6 +29,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
@@ -43,9 +48,10 @@ const char* const usage =
   "Multi-scale curvature of a point cloud on its conformal alpha shape.\n"
   "  INPUT            .xyz, .pwn, .ply, .off or .obj (meshes: their vertices);\n"
   "                   default: the bundled Stanford bunny sample\n"
-  "  --alpha LIST     comma list of scales: values (0.5), quantiles of the facet\n"
-  "                   values (25%) and/or auto; default 10%,25%,35%,50%\n"
-  "  --rings LIST     comma list of ring sizes >= 1; default 1,2\n"
+  "  --alpha LIST     comma list of scales: values > 0 (0.5), quantiles of the\n"
+  "                   facet values in (0%, 100%] (25%) and/or auto;\n"
+  "                   default 10%,25%,35%,50%\n"
+  "  --rings LIST     comma list of ring sizes from 1 to 100; default 1,2\n"
   "  --estimator NAME quadric (default), euler-least-squares or paper\n"
   "  --denoise MODE   auto (default: smooth when the estimated noise exceeds\n"
   "                   0.02 x spacing), on or off\n"
@@ -56,7 +62,11 @@ const char* const usage =
   "  --output DIR     default ./conformal_curvature_out\n"
   "  --quiet          no progress and no summary\n"
   "Writes DIR/surface_<scale>_rings<k>.ply per scale and ring size, and\n"
-  "DIR/curvatures.csv with one row per input point per (scale, ring size).\n";
+  "DIR/curvatures.csv with one row per input point per (scale, ring size).\n"
+  "The points are recentred and rescaled before the work (results are in the\n"
+  "input's units); isolated far outliers are left out and get outlier = 1.\n"
+  "A failed run exits with status 1 and one line on stderr, and leaves DIR\n"
+  "as it was.\n";
 
 // A failure with a one-line reason for the user.
 struct Failure : std::runtime_error
@@ -99,7 +109,7 @@ Options parse(int argc, char* argv[])
   {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
+      if(i + 1 >= argc || (std::string(argv[i + 1]).rfind("--", 0) == 0))
         throw Failure("option " + arg + " needs a value");
       return argv[++i];
     };
@@ -111,8 +121,12 @@ Options parse(int argc, char* argv[])
     {
       o.scales.clear();
       for(const std::string& item : split_list(value()))
+      {
         try { o.scales.push_back(CAS3::Scale::from_string(item)); }
         catch(const std::invalid_argument& e) { throw Failure(std::string("--alpha: ") + e.what()); }
+        if(o.scales.back().kind() != CAS3::Scale::AUTOMATIC && !(o.scales.back().value() > 0))
+          throw Failure("--alpha: a scale must be above 0 (a value > 0 or a quantile in (0%, 100%]): '" + item + "'");
+      }
     }
     else if(arg == "--rings")
     {
@@ -121,8 +135,8 @@ Options parse(int argc, char* argv[])
       {
         int k = 0;
         const auto r = std::from_chars(item.data(), item.data() + item.size(), k);
-        if(r.ec != std::errc() || r.ptr != item.data() + item.size() || k < 1)
-          throw Failure("--rings: not a ring size >= 1: '" + item + "'");
+        if(r.ec != std::errc() || r.ptr != item.data() + item.size() || k < 1 || k > 100)
+          throw Failure("--rings: not a ring size from 1 to 100: '" + item + "'");
         o.rings.push_back(k);
       }
     }
@@ -159,7 +173,11 @@ Options parse(int argc, char* argv[])
       else throw Failure("--extraction: unknown extraction '" + name + "' (front, solid)");
     }
     else if(arg == "--output")
+    {
       o.output = value();
+      if(o.output.empty())
+        throw Failure("--output: empty directory name");
+    }
     else if(!arg.empty() && arg[0] == '-')
       throw Failure("unknown option " + arg);
     else if(input_given)
@@ -171,39 +189,6 @@ Options parse(int argc, char* argv[])
     }
   }
   return o;
-}
-
-std::vector<Point> read_input(const std::string& file)
-{
-  if(!fs::is_regular_file(file))
-    throw Failure("cannot open " + file);
-  std::string ext = fs::path(file).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if(ext != ".xyz" && ext != ".pwn" && ext != ".ply" && ext != ".off" && ext != ".obj")
-    throw Failure("unknown input extension '" + ext + "' (.xyz, .pwn, .ply, .off, .obj)");
-  // CGAL's readers explain a failure on std::cerr: keep it for our one line
-  std::ostringstream reader_messages;
-  std::streambuf* const cerr_buffer = std::cerr.rdbuf(reader_messages.rdbuf());
-  std::vector<Point> points;
-  bool ok = false;
-  if(ext == ".obj")
-  {
-    std::vector<std::vector<std::size_t> > faces;
-    ok = CGAL::IO::read_OBJ(file, points, faces);
-  }
-  else
-    ok = CGAL::IO::read_points(file, std::back_inserter(points));
-  std::cerr.rdbuf(cerr_buffer);
-  if(!ok)
-  {
-    std::string why = reader_messages.str();
-    why = why.substr(0, why.find('\n'));
-    throw Failure("cannot read " + file + ": not a valid " + ext.substr(1) + " file" +
-                  (why.empty() ? std::string() : " (" + why + ")"));
-  }
-  if(points.empty())
-    throw Failure(file + " holds no point");
-  return points;
 }
 
 // Blue (concave) - white - red (convex) by mean curvature, grey where
@@ -245,7 +230,7 @@ void append(std::string& out, double x)
 }
 
 void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double alpha, int rings,
-                     const std::vector<CAS3::Point_curvature<K> >& curvatures)
+                     const std::vector<CAS3::Point_curvature<K> >& curvatures, const std::vector<bool>& outlier)
 {
   std::string line;
   for(std::size_t i = 0; i < points.size(); ++i)
@@ -267,9 +252,59 @@ void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double
       line += ',';
       append(line, x);
     }
-    line += '\n';
+    line += outlier[i] ? ",1\n" : ",0\n";
     csv << line;
   }
+}
+
+// Curvatures of the kept (normalised) points, back per input point in input
+// units; outliers are off every surface.
+std::vector<CAS3::Point_curvature<K> > to_input_units(const std::vector<CAS3::Point_curvature<K> >& kept,
+                                                      const CAS3::internal::Normalized_input<K>& input,
+                                                      std::size_t number_of_points)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  CAS3::Point_curvature<K> off;
+  off.normal = K::Vector_3(nan, nan, nan);
+  off.principal = CAS3::Principal_curvatures_and_directions<K>{nan, nan, off.normal, off.normal};
+  std::vector<CAS3::Point_curvature<K> > result(number_of_points, off);
+  for(std::size_t i = 0; i < kept.size(); ++i)
+  {
+    CAS3::Point_curvature<K> c = kept[i];
+    c.mean_curvature = input.curvature_to_input(c.mean_curvature);
+    c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
+    c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
+    c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
+    result[input.input_index[i]] = c;
+  }
+  return result;
+}
+
+// A copy of the surface with its vertices at their input points, curvatures
+// in input units, and "v:input_index" the index in the input file.
+Analysis::Surface surface_in_input_units(const Analysis::Surface& normalized,
+                                         const CAS3::internal::Normalized_input<K>& input,
+                                         const std::vector<Point>& points)
+{
+  Analysis::Surface surface = normalized;
+  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
+  auto scale = [&](const char* name, bool gaussian) {
+    auto map = surface.property_map<Analysis::Surface_vertex, double>(name);
+    if(!map.second)
+      return;
+    for(auto v : surface.vertices())
+      map.first[v] = gaussian ? input.gaussian_curvature_to_input(map.first[v]) : input.curvature_to_input(map.first[v]);
+  };
+  scale("v:mean_curvature", false);
+  scale("v:gaussian_curvature", true);
+  scale("v:k1", false);
+  scale("v:k2", false);
+  for(auto v : surface.vertices())
+  {
+    index[v] = input.input_index[index[v]];
+    surface.point(v) = points[index[v]];
+  }
+  return surface;
 }
 
 std::string quantiles(std::vector<double> values)
@@ -285,43 +320,142 @@ std::string quantiles(std::vector<double> values)
   return text;
 }
 
-// Files are written under temporary names and renamed when the whole run
-// succeeded, so that a failed run leaves no partial results behind.
+// Files are written into a private temporary directory and moved into the
+// output directory only when the whole run succeeded, so that a failed run
+// leaves the output directory as it was: no partial or hidden files, and no
+// directory when the run created it. A fatal signal (a crash) removes the
+// temporary files too. The output directory is created and probed for
+// writing before any work starts.
+namespace cleanup {
+// async-signal-safe state for the fatal-signal handler
+char temporary_dir[4096] = "";
+char files[64][4096];
+volatile std::sig_atomic_t number_of_files = 0;
+char created_dirs[16][4096];  // the directories this run created, deepest first
+volatile std::sig_atomic_t number_of_created_dirs = 0;
+
+extern "C" void on_fatal_signal(int sig)
+{
+  for(int i = 0; i < number_of_files; ++i)
+    ::unlink(files[i]);
+  if(temporary_dir[0])
+    ::rmdir(temporary_dir);
+  for(int i = 0; i < number_of_created_dirs; ++i)
+    ::rmdir(created_dirs[i]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void copy(char* to, const std::string& from)
+{
+  std::strncpy(to, from.c_str(), 4095);
+  to[4095] = 0;
+}
+} // namespace cleanup
+
 class Output
 {
 public:
   explicit Output(const std::string& dir) : m_dir(dir)
   {
     std::error_code error;
-    fs::create_directories(m_dir, error);
-    if(!fs::is_directory(m_dir))
-      throw Failure("cannot create the output directory " + dir);
+    const bool existed = fs::exists(m_dir, error);
+    if(existed && !fs::is_directory(m_dir, error))
+      throw Failure("cannot create the output directory " + dir + ": a file of that name exists");
+    if(!existed)
+    {
+      // remember the levels we create, to remove them on failure
+      std::vector<fs::path> created;
+      for(fs::path p = fs::absolute(m_dir, error); !p.empty() && !fs::exists(p, error); p = p.parent_path())
+      {
+        created.push_back(p);
+        if(p == p.parent_path())
+          break;
+      }
+      fs::create_directories(m_dir, error);
+      if(!fs::is_directory(m_dir, error))
+        throw Failure("cannot create the output directory " + dir);
+      m_created = created.empty() ? fs::path() : created.back();
+      for(std::size_t i = 0; i < created.size() && i < 16; ++i)
+        cleanup::copy(cleanup::created_dirs[i], created[i].string());
+      cleanup::number_of_created_dirs = int((std::min)(created.size(), std::size_t(16)));
+    }
+    // probe: can we create and rename files there?
+    const fs::path probe = m_dir / (".conformal_curvature_probe_" + std::to_string(::getpid()));
+    {
+      std::ofstream out(probe);
+      out << "probe";
+      out.close();
+      if(!out)
+      {
+        fs::remove(probe, error);
+        remove_created();
+        throw Failure("cannot write into the output directory " + dir);
+      }
+    }
+    fs::remove(probe, error);
+
+    std::string templ = (fs::temp_directory_path(error) / "conformal_curvature_XXXXXX").string();
+    if(::mkdtemp(&templ[0]) == nullptr)
+    {
+      remove_created();
+      throw Failure("cannot create a temporary directory in " + fs::temp_directory_path(error).string());
+    }
+    m_temporary = templ;
+    cleanup::copy(cleanup::temporary_dir, templ);
+    for(int sig : {SIGSEGV, SIGABRT, SIGFPE, SIGBUS, SIGILL, SIGINT, SIGTERM})
+      std::signal(sig, cleanup::on_fatal_signal);
   }
   ~Output()
   {
     std::error_code ignored;
-    for(const auto& f : m_files)
-      fs::remove(temporary(f), ignored);
+    cleanup::number_of_files = 0;
+    cleanup::temporary_dir[0] = 0;
+    fs::remove_all(m_temporary, ignored);
+    if(!m_committed)
+      remove_created();
+    cleanup::number_of_created_dirs = 0;
   }
   std::ofstream open(const std::string& name, bool binary)
   {
     m_files.push_back(name);
-    std::ofstream out(temporary(name), binary ? std::ios::binary : std::ios::out);
+    if(cleanup::number_of_files < 64)
+    {
+      cleanup::copy(cleanup::files[cleanup::number_of_files], (m_temporary / name).string());
+      cleanup::number_of_files = cleanup::number_of_files + 1;
+    }
+    std::ofstream out(m_temporary / name, binary ? std::ios::binary : std::ios::out);
     if(!out)
-      throw Failure("cannot write into the output directory " + m_dir.string());
+      throw Failure("cannot write a temporary file into " + m_temporary.string());
     return out;
   }
   void commit()
   {
     for(const auto& f : m_files)
-      fs::rename(temporary(f), m_dir / f);
-    m_files.clear();
+    {
+      std::error_code error;
+      fs::rename(m_temporary / f, m_dir / f, error);
+      if(error)  // another file system: copy
+      {
+        fs::copy_file(m_temporary / f, m_dir / f, fs::copy_options::overwrite_existing, error);
+        if(error)
+          throw Failure("cannot write into the output directory " + m_dir.string());
+      }
+    }
+    m_committed = true;
   }
 
 private:
-  fs::path temporary(const std::string& name) const { return m_dir / ("." + name + ".partial"); }
-  fs::path m_dir;
+  void remove_created()
+  {
+    std::error_code ignored;
+    if(!m_created.empty())
+      fs::remove_all(m_created, ignored);
+    m_created.clear();
+  }
+  fs::path m_dir, m_temporary, m_created;
   std::vector<std::string> m_files;
+  bool m_committed = false;
 };
 
 std::string file_label(const CAS3::Scale& s)
@@ -340,36 +474,52 @@ int run(const Options& o)
       std::cerr << "conformal_curvature: " << what << std::endl;
   };
 
-  const std::vector<Point> points = read_input(o.input);
+  Output output(o.output);  // before any work: an unwritable folder fails first
+  const cas3::Point_cloud cloud = cas3::read_point_cloud(o.input);
+  const std::vector<Point>& points = cloud.points;
   progress("read " + std::to_string(points.size()) + " points");
+  // recentred, rescaled, isolated far outliers removed (see the manual)
+  CAS3::internal::Normalized_input<K> input;
   std::unique_ptr<Analysis> analysis;
   try
   {
-    const auto np = CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction));
+    input = CAS3::internal::normalize_input<K>(cloud.points);
+    // the given normals of the kept points, if any
+    std::vector<K::Vector_3> normals;
+    if(!cloud.normals.empty())
+      for(std::size_t i : input.input_index)
+        normals.push_back(cloud.normals[i]);
+    const auto np = CAS3::parameters::reference_normals(std::cref(normals),
+      CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
     analysis = o.denoising_neighbors > 0
-      ? std::make_unique<Analysis>(points.begin(), points.end(), CAS3::parameters::denoising_neighbors(o.denoising_neighbors, np))
-      : std::make_unique<Analysis>(points.begin(), points.end(), np);
+      ? std::make_unique<Analysis>(input.points.begin(), input.points.end(),
+                                   CAS3::parameters::denoising_neighbors(o.denoising_neighbors, np))
+      : std::make_unique<Analysis>(input.points.begin(), input.points.end(), np);
   }
   catch(const std::invalid_argument& e) { throw Failure(o.input + ": " + e.what()); }
+  if(!input.outliers.empty())
+    progress(std::to_string(input.outliers.size()) + " isolated far outliers left out");
   progress("built the conformal alpha shape");
 
-  Output output(o.output);
   std::ofstream csv = output.open("curvatures.csv", false);
-  csv << "point_index,x,y,z,alpha_hat,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z\n";
+  csv << "point_index,x,y,z,alpha_hat,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,outlier\n";
   std::ostringstream summary;
   char noise[200];
   const CAS3::Denoising_plan& smoothing = analysis->denoising();
   std::snprintf(noise, sizeof noise, "noise: %.3g x spacing (spacing %.4g)%s; ", analysis->noise().noise,
-                analysis->noise().spacing,
+                input.length_to_input(analysis->noise().spacing),
                 analysis->noise().noise_24 > 1.3 * analysis->noise().noise ? ", mostly unresolved detail" : "");
-  std::string smoothing_text = smoothing.passes == 0 ? std::string("no smoothing\n")
+  const std::string smoothing_text = smoothing.passes == 0 ? std::string("no smoothing\n")
     : "smoothed by " + std::to_string(smoothing.passes) + " jet pass(es) over "
         + std::to_string(smoothing.neighbors) + " neighbours before building the shape\n";
-  summary << o.input << ": " << points.size() << " points\n" << noise << smoothing_text
+  summary << o.input << ": " << points.size() << " points";
+  if(!input.outliers.empty())
+    summary << ", " << input.outliers.size() << " isolated far outliers left out (outlier column)";
+  summary << "\n" << noise << smoothing_text
           << "surface: " << (o.extraction == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
           << "; orientation: "
-          << (analysis->has_reference_normals() ? "the majority of the input normals, per part"
-                                                : "closed parts outward, open parts away from the centre")
+          << (analysis->has_reference_normals() ? "the majority of the input normals, per sheet"
+                                                : "closed sheets outward, open sheets away from the centre")
           << "\n"
           << "scale      alpha_hat   rings  on surface     faces    H:  5%          50%          95%"
              "      K:  5%          50%          95%\n";
@@ -384,13 +534,20 @@ int run(const Options& o)
             << report.number_of_points_off_surface << " points off the surface\n";
     for(int k : o.rings)
     {
-      const auto curvatures = analysis->estimate_curvatures(surface, k, o.estimator);
-      colour_by_mean_curvature(surface);
+      const auto kept = analysis->estimate_curvatures(surface, k, o.estimator);
+      const std::vector<CAS3::Point_curvature<K> > curvatures = to_input_units(kept, input, points.size());
+      Analysis::Surface written = surface_in_input_units(surface, input, points);
+      colour_by_mean_curvature(written);
       std::ofstream ply = output.open("surface_" + file_label(scale) + "_rings" + std::to_string(k) + ".ply", true);
       CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
-      if(!CGAL::IO::write_PLY(ply, surface) || !ply)
+      if(!CGAL::IO::write_PLY(ply, written) || !ply)
         throw Failure("cannot write into the output directory " + o.output);
-      append_csv_rows(csv, points, alpha, k, curvatures);
+      ply.close();
+      // test hook: a crash (an abort, as a failed assertion) after the first
+      // file, to check the clean-up
+      if(std::getenv("CONFORMAL_CURVATURE_TEST_CRASH") != nullptr)
+        std::raise(SIGABRT);
+      append_csv_rows(csv, points, alpha, k, curvatures, input.is_outlier);
       if(!csv)
         throw Failure("cannot write into the output directory " + o.output);
 

@@ -11,6 +11,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/determinant.h>
 #include <CGAL/Iterator_range.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
@@ -81,7 +82,24 @@ its local scale and pole. Facet and edge values follow from these when asked
 for. The sorted spectrum is computed on first use.
 
 The triangulation must not be modified after construction: its values would
-no longer be valid. Use `make_conformal_alpha_shape()` to rebuild.
+no longer be valid. Use `make_conformal_alpha_shape()` to rebuild. The class
+can be neither copied nor moved (as `Alpha_shape_3`): a copy of the
+triangulation would keep handles into the original.
+
+Range of the input: the values are computed in `double` from circumcentres,
+whose coordinates are quotients of fourth and third powers of coordinate
+differences. The construction therefore rejects, with `std::invalid_argument`,
+points whose coordinates exceed `1e75` in magnitude, point sets whose
+bounding box is larger than `1e75` or smaller than `1e-75` along its longest
+axis, and, as a last guard, any point set on which a circumcentre or a
+circumradius is not a finite positive `double`, or on which the determinant
+that the kernel divides by to construct a circumcentre or a facet radius is
+0 in `double` (a tetrahedron or triangle flat to rounding, far smaller than
+the bounding box, say: exact predicates accept it, inexact constructions
+cannot handle it). Such inputs crashed or gave empty surfaces
+before. Normalise such data first: the pipeline (see the manual, section on
+input rules) recentres and rescales the points, and flags isolated far
+outliers, before building this class.
 
 \tparam Dt a `Delaunay_triangulation_3` whose geometric traits class is a
         CGAL kernel with `double` as field type (such as
@@ -125,6 +143,18 @@ public:
   /// An empty shape; fill it with `make_conformal_alpha_shape()`.
   explicit Conformal_alpha_shape_3(FT alpha = FT(0)) : m_alpha(alpha) {}
 
+  // Neither copyable nor movable: vertices and cells hold handles, and the
+  // input-vertex table points into this triangulation.
+  Conformal_alpha_shape_3(const Conformal_alpha_shape_3&) = delete;
+  Conformal_alpha_shape_3& operator=(const Conformal_alpha_shape_3&) = delete;
+  Conformal_alpha_shape_3(Conformal_alpha_shape_3&&) = delete;
+  Conformal_alpha_shape_3& operator=(Conformal_alpha_shape_3&&) = delete;
+
+  /// The largest coordinate magnitude and bounding-box extent accepted.
+  static constexpr double max_coordinate_magnitude() { return 1e75; }
+  /// The smallest bounding-box extent (along the longest axis) accepted.
+  static constexpr double min_extent() { return 1e-75; }
+
   /// The shape of the points in `[first, last)`, local scales from poles
   /// as `make_conformal_alpha_shape()` computes them.
   /// \throws std::invalid_argument as `make_conformal_alpha_shape()`.
@@ -163,9 +193,14 @@ public:
   \cgalNamedParamsEnd
 
   \throws std::invalid_argument, leaving the shape empty, when a coordinate
-  is NaN or infinite (the message names the first such index), or when the
-  points do not span 3D (empty input, fewer than 4 distinct points, all
-  coplanar or collinear): the filtration needs a 3D triangulation.
+  is NaN or infinite (the message names the first such index), when a
+  coordinate's magnitude exceeds `max_coordinate_magnitude()` (the message
+  names the index), when the bounding box is longer than
+  `max_coordinate_magnitude()` or shorter than `min_extent()` along its
+  longest axis, when a circumcentre or circumradius overflows or underflows
+  in `double`, or when the points do not span 3D (empty input, fewer than 4
+  distinct points, all coplanar or collinear): the filtration needs a 3D
+  triangulation.
   */
   template <class InputIterator, class NamedParameters = parameters::Default_named_parameters>
   size_type make_conformal_alpha_shape(InputIterator first, InputIterator last,
@@ -180,7 +215,17 @@ public:
       get_parameter(np, CAS3::internal_np_cas3::local_scale_estimator), CAS3::NOISE_ROBUST_POLE_DISTANCE);
 
     insert_points(first, last);
-    const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, store_cell_values());
+    std::vector<Point> centers = store_cell_values();
+    if(!centers.empty() && this->number_of_vertices() == 0)
+    {
+      // store_cell_values() found a construction out of double's range
+      throw std::invalid_argument("Conformal_alpha_shape_3: a circumcentre or circumradius of the Delaunay "
+                                  "tetrahedra overflows or underflows in double, or divides by a "
+                                  "determinant that is 0 in double (tetrahedra or triangles flat to "
+                                  "rounding, of very different sizes); normalise the coordinates and "
+                                  "remove far outliers");
+    }
+    const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, centers);
     for(Vertex_handle v : this->finite_vertex_handles())
     {
       v->set_pole_cell(poles[v->vertex_index()].cell);
@@ -682,18 +727,38 @@ private:
   {
     clear();
     const std::vector<Point> points(first, last);
+    double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
     for(size_type i = 0; i < points.size(); ++i)
       for(int d = 0; d < 3; ++d)
-        if(!std::isfinite(CGAL::to_double(points[i][d])))
+      {
+        const double x = CGAL::to_double(points[i][d]);
+        if(!std::isfinite(x))
           throw std::invalid_argument("Conformal_alpha_shape_3: input point " + std::to_string(i)
                                       + " has a coordinate that is NaN or infinite");
+        if(std::abs(x) > max_coordinate_magnitude())
+          throw std::invalid_argument("Conformal_alpha_shape_3: input point " + std::to_string(i)
+                                      + " has a coordinate of magnitude above 1e75, out of the range in "
+                                        "which circumcentres can be computed in double; normalise the "
+                                        "coordinates or remove the outlier");
+        low[d] = (i == 0) ? x : (std::min)(low[d], x);
+        high[d] = (i == 0) ? x : (std::max)(high[d], x);
+      }
+    const double extent = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
+    if(!points.empty() && extent > max_coordinate_magnitude())
+      throw std::invalid_argument("Conformal_alpha_shape_3: the bounding box of the input is longer than "
+                                  "1e75, out of the range in which circumcentres can be computed in double");
+    if(extent > 0 && extent < min_extent())
+      throw std::invalid_argument("Conformal_alpha_shape_3: the bounding box of the input is shorter than "
+                                  "1e-75, out of the range in which circumcentres can be computed in double; "
+                                  "rescale the coordinates");
 
     std::vector<size_type> order(points.size());
     std::iota(order.begin(), order.end(), size_type(0));
     typedef typename CGAL::Pointer_property_map<Point>::const_type Point_map;
-    CGAL::spatial_sort(order.begin(), order.end(),
-                       Spatial_sort_traits_adapter_3<Gt, Point_map>(
-                         CGAL::make_property_map(points)));
+    if(!points.empty())  // make_property_map() reads points[0]
+      CGAL::spatial_sort(order.begin(), order.end(),
+                         Spatial_sort_traits_adapter_3<Gt, Point_map>(
+                           CGAL::make_property_map(points)));
 
     m_input_vertices.assign(points.size(), Vertex_handle());
     Vertex_handle hint;
@@ -735,6 +800,9 @@ private:
   // balls through the facet's circle lie on one line, and the opposite
   // vertex's power changes sign with the centre's side. This is a filtered
   // orientation test, much cheaper than Side_of_bounded_sphere_3.
+  // When a circumcentre or radius is not finite (or the radius is 0), the
+  // later predicates would run on NaN or infinity: the shape is cleared and
+  // the centres computed so far are returned, for the caller to throw.
   std::vector<Point> store_cell_values()
   {
     const Gt& gt = this->geom_traits();
@@ -754,10 +822,22 @@ private:
           c->set_encroaches_facet(i, false);
         continue;
       }
+      if(!constructions_are_defined(c))
+      {
+        clear();
+        return centers;
+      }
       const Point& center = centers[c->cell_index()] =
         circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
                      c->vertex(2)->point(), c->vertex(3)->point());
-      c->set_alpha(std::sqrt(squared_distance(center, c->vertex(0)->point())));
+      const double radius = std::sqrt(squared_distance(center, c->vertex(0)->point()));
+      if(!(std::isfinite(center.x()) && std::isfinite(center.y()) && std::isfinite(center.z())
+           && std::isfinite(radius) && radius > 0))
+      {
+        clear();
+        return centers;
+      }
+      c->set_alpha(radius);
       for(int i = 0; i < 4; ++i)
       {
         // (v[i+1], v[i+2], v[i+3], v[i]) is a cyclic shift of a positive cell
@@ -769,6 +849,41 @@ private:
       }
     }
     return centers;
+  }
+
+  // The kernel's circumcentre of a cell and squared radius of a facet divide
+  // by a determinant of coordinate differences, computed in double. A
+  // tetrahedron or triangle flat to rounding (which the exact predicates may
+  // still see as non-degenerate, e.g. at wildly different scales) makes it 0:
+  // the construction is then undefined (NaN, or an assertion in debug
+  // builds). The same determinants, computed the same way, tell beforehand:
+  // the circumcentre of (p, q, r, s) divides by det(q - p, r - p, s - p), the
+  // squared radius of the facet (a, b, c) by det(a - c, b - c, (a - c) x (b - c)),
+  // with the facet opposite to vertex i taken as (i + 1, i + 2, i + 3) as in
+  // ordinary_alpha().
+  bool constructions_are_defined(Cell_handle c) const
+  {
+    auto usable = [](double d) { return d != 0 && std::isfinite(d); };
+    const Point& p = c->vertex(0)->point();
+    const Point& q = c->vertex(1)->point();
+    const Point& r = c->vertex(2)->point();
+    const Point& s = c->vertex(3)->point();
+    if(!usable(CGAL::determinant(q.x() - p.x(), q.y() - p.y(), q.z() - p.z(),
+                                 r.x() - p.x(), r.y() - p.y(), r.z() - p.z(),
+                                 s.x() - p.x(), s.y() - p.y(), s.z() - p.z())))
+      return false;
+    for(int i = 0; i < 4; ++i)
+    {
+      const Point& a = c->vertex((i + 1) & 3)->point();
+      const Point& b = c->vertex((i + 2) & 3)->point();
+      const Point& o = c->vertex((i + 3) & 3)->point();
+      const double ax = a.x() - o.x(), ay = a.y() - o.y(), az = a.z() - o.z();
+      const double bx = b.x() - o.x(), by = b.y() - o.y(), bz = b.z() - o.z();
+      const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+      if(!usable(CGAL::determinant(ax, ay, az, bx, by, bz, nx, ny, nz)))
+        return false;
+    }
+    return true;
   }
 
   FT m_alpha;

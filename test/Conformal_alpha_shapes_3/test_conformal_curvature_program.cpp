@@ -37,13 +37,14 @@ struct Run
   std::string err;
 };
 
-// Runs the program with `args` (a shell fragment) from the work directory.
-Run run(const std::string& args)
+// Runs the program with `args` (a shell fragment) from the work directory,
+// with the environment assignments `environment` (a shell fragment).
+Run run(const std::string& args, const std::string& environment = "")
 {
   fs::create_directories(work);
   const fs::path err = work / "stderr.txt";
-  const std::string command = "cd '" + work.string() + "' && '" + std::string(CAS3_PROGRAM) + "' " + args + " 2> '" +
-                              err.string() + "' > /dev/null";
+  const std::string command = "cd '" + work.string() + "' && " + environment + " '" + std::string(CAS3_PROGRAM) + "' " +
+                              args + " 2> '" + err.string() + "' > /dev/null";
   const int status = std::system(command.c_str());
   std::ifstream in(err);
   std::stringstream text;
@@ -98,7 +99,7 @@ BOOST_AUTO_TEST_CASE(bunny_default_run)
   const Csv csv = read_csv(work / "bunny" / "curvatures.csv");
   const std::vector<std::string> expected = {"point_index", "x", "y", "z", "alpha_hat", "rings", "on_surface",
                                              "nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z",
-                                             "d2x", "d2y", "d2z"};
+                                             "d2x", "d2y", "d2z", "outlier"};
   BOOST_TEST(csv.header == expected, boost::test_tools::per_element());
   BOOST_REQUIRE_EQUAL(csv.rows.size(), 5000u * 4 * 2);  // points x scales x rings
   std::size_t on = 0;
@@ -166,41 +167,349 @@ BOOST_AUTO_TEST_CASE(noisy_ellipsoid_at_the_automatic_scale)
   BOOST_TEST(csv.rows[20000][4] == 0.5);  // the absolute scale, as given
 }
 
+std::string bytes_of(const fs::path& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 BOOST_AUTO_TEST_CASE(bad_input_fails_with_one_line_and_no_output)
 {
   fs::create_directories(work);
-  std::ofstream(work / "empty.xyz").close();
-  std::ofstream(work / "garbage.xyz") << "hello world\nthis is not a point cloud\n";
-  std::ofstream(work / "three.xyz") << "0 0 0\n1 0 0\n0 1 0\n";
-  std::ofstream(work / "nan.xyz") << "0 0 0\n1 0 0\nnan 1 0\n0 0 1\n1 1 1\n";
-  std::ofstream(work / "points.abc") << "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  auto write = [](const std::string& name, const std::string& bytes) {
+    std::ofstream(work / name, std::ios::binary) << bytes;
+  };
+  write("empty.xyz", "");
+  write("comments.xyz", "# nothing but a comment\n\n");
+  write("garbage.xyz", "hello world foo\nthis is not\n");
+  write("two_columns.xyz", "0 0\n1 0\n0 1\n");
+  write("mixed_columns.xyz", "0 0 0\n1 0 0\n0 1 0 5\n0 0 1\n");
+  write("nan.xyz", "0 0 0\n1 0 0\nnan 1 0\n0 0 1\n1 1 1\n");
+  write("inf.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 -inf\n");
+  write("overflow.xyz", "0 0 0\n1 0 1e999\n0 1 0\n0 0 1\n");
+  write("binary_junk.xyz", std::string("\x00\x01\x02 \xff\xfe\xfd \x80\x81\x82\n", 12));
+  write("one.xyz", "1 2 3\n");
+  write("three.xyz", "0 0 0\n1 0 0\n0 1 0\n");
+  write("pwn_three_columns.pwn", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  write("bad_obj.obj", "# a vertex with two coordinates\nv 0 0 0\nv 1 2\n");
+  write("points.abc", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  write("lying_count.xyz", "5\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  write("lying.off", "OFF\n10 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n");
+  write("bad_header.off", "FOO\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 10\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  write("lying.ply", ply_head + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  write("no_end.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n");
+  write("no_vertex.ply", "ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n");
+  write("no_z.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n");
+  write("not.ply", "plx\nformat ascii 1.0\n");
+  write("short_line.ply", ply_head + "0 0 0\n1 0\n");
+  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty double x\n"
+                       "property double y\nproperty double z\nend_header\n";
+  for(int i = 0; i < 3 * 4 + 1; ++i)  // 4 vertices and a byte
+    binary += std::string(8, '\0').replace(0, 1, 1, char(i));
+  binary.resize(binary.size() - 7);
+  write("truncated_binary.ply", binary);
+  fs::create_directories(work / "a_directory.xyz");
   std::ofstream(work / "a_file") << "not a directory\n";
+
+  std::vector<std::string> line, grid, equal;
+  for(int i = 0; i < 20; ++i)
+  {
+    equal.push_back("3 4 5");
+    line.push_back(std::to_string(i) + " " + std::to_string(2 * i) + " " + std::to_string(3 * i));
+    for(int j = 0; j < 20; ++j)
+      grid.push_back(std::to_string(i) + " " + std::to_string(j) + " 7");
+  }
+  auto join = [](const std::vector<std::string>& v) { std::string s; for(const auto& x : v) s += x + "\n"; return s; };
+  write("collinear.xyz", join(line));
+  write("flat_grid.xyz", join(grid));
+  write("all_equal.xyz", join(equal));
+
   struct Case { std::string args, reason; };
   const std::vector<Case> cases = {
-    {"missing.xyz", "cannot open"},
-    {"empty.xyz", "no point"},
-    {"garbage.xyz", "not a valid xyz file"},
+    {"missing.xyz", "missing.xyz: no such file"},
+    {"a_directory.xyz", "a_directory.xyz: is a directory"},
+    {"points.abc", "points.abc: unknown input extension '.abc'"},
+    {"empty.xyz", "empty.xyz: the file holds no point"},
+    {"comments.xyz", "comments.xyz: the file holds no point"},
+    {"garbage.xyz", "garbage.xyz:1: not a number: 'hello'"},
+    {"two_columns.xyz", "two_columns.xyz:1: expected 3 or 6 numbers (x y z [nx ny nz]), found 2 fields"},
+    {"mixed_columns.xyz", "mixed_columns.xyz:3: expected 3 numbers as on line 1, found 4 fields"},
+    {"nan.xyz", "nan.xyz:3: coordinate is NaN or infinite: 'nan'"},
+    {"inf.xyz", "inf.xyz:4: coordinate is NaN or infinite: '-inf'"},
+    {"overflow.xyz", "overflow.xyz:2: number out of the range of double: '1e999'"},
+    {"binary_junk.xyz", "binary_junk.xyz:1: not a number: '\\x00\\x01\\x02'"},
+    {"pwn_three_columns.pwn", "expected 6 numbers (x y z nx ny nz), found 3 fields"},
+    {"bad_obj.obj", "bad_obj.obj:3: expected 3 coordinates after 'v', found 2 fields"},
+    {"lying_count.xyz", "lying_count.xyz:1: the first line announces 5 points, the file holds 4"},
+    {"lying.off", "lying.off: the header promises 10 vertices, the file ends after 5"},
+    {"bad_header.off", "bad_header.off:1: not an OFF header: 'FOO'"},
+    {"lying.ply", "lying.ply: the header promises 10 vertex elements, the file ends after 4"},
+    {"no_end.ply", "no_end.ply: the PLY header has no end_header line"},
+    {"no_vertex.ply", "no_vertex.ply: the PLY header declares no vertex element"},
+    {"no_z.ply", "no_z.ply: the PLY vertex element lacks an x, y or z property"},
+    {"not.ply", "not.ply:1: not a PLY file"},
+    {"short_line.ply", "short_line.ply:9: too few values for element vertex"},
+    {"truncated_binary.ply", "truncated binary PLY: the header promises 5 vertex elements, the file ends in element 4"},
+    {"one.xyz", "the 1 input points (1 distinct) span dimension 0"},
     {"three.xyz", "span dimension 2"},
-    {"nan.xyz", "not a valid xyz file"},
-    {"points.abc", "unknown input extension"},
-    {"--output a_file/out", "cannot create the output directory"},
-    {"--bogus", "unknown option"},
+    {"collinear.xyz", "span dimension 1"},
+    {"flat_grid.xyz", "span dimension 2"},
+    {"all_equal.xyz", "the 20 input points (1 distinct) span dimension 0"},
+    {"three.xyz --output a_file/out", "cannot create the output directory a_file/out"},
+    {"three.xyz --output a_file", "cannot create the output directory a_file: a file of that name exists"},
+    {"three.xyz --output /proc/cas3_out", "cannot create the output directory /proc/cas3_out"},
+    {"--bogus", "unknown option --bogus"},
     {"--alpha 10%,,20%", "empty item"},
-    {"--alpha 10%,big", "not a scale"},
-    {"--alpha 150%", "not a scale"},
-    {"--rings 1,0", "ring size"},
+    {"--alpha 10%,big", "--alpha: not a scale: 'big'"},
+    {"--alpha 150%", "--alpha: not a scale: '150%'"},
+    {"--alpha -0.5", "--alpha: not a scale: '-0.5'"},
+    {"--alpha 0", "--alpha: a scale must be above 0"},
+    {"--alpha 0%", "--alpha: a scale must be above 0"},
+    {"--rings 1,0", "--rings: not a ring size from 1 to 100: '0'"},
+    {"--rings 2.5", "--rings: not a ring size from 1 to 100: '2.5'"},
+    {"--rings 101", "--rings: not a ring size from 1 to 100: '101'"},
+    {"--rings", "option --rings needs a value"},
     {"--estimator magic", "unknown estimator"},
-    {"--output", "needs a value"},
+    {"--output", "option --output needs a value"},
+    {"--output ''", "--output: empty directory name"},
+    {"--estimator", "option --estimator needs a value"},
+    {"--alpha --rings 2", "option --alpha needs a value"},
+    {"three.xyz one.xyz", "more than one input file"},
   };
   for(const Case& k : cases)
   {
     fs::remove_all(work / "out");
     const Run r = run(k.args + (k.args.find("--output") == std::string::npos ? " --output out" : ""));
     BOOST_TEST_INFO(k.args << ": " << r.err);
-    BOOST_TEST(r.exit_code != 0);
+    BOOST_TEST(r.exit_code == 1);
+    BOOST_TEST(r.err.rfind("conformal_curvature: ", 0) == 0u);
     BOOST_TEST(r.err.find(k.reason) != std::string::npos);
     BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // one line
-    BOOST_TEST((!fs::exists(work / "out") || fs::is_empty(work / "out")));
+    BOOST_TEST(!fs::exists(work / "out"));  // not even created
+  }
+  BOOST_TEST(cases.size() >= 49u);
+
+  // a failed run leaves an existing folder as it was, hidden files included
+  fs::remove_all(work / "kept");
+  fs::create_directories(work / "kept");
+  std::ofstream(work / "kept" / "keep.txt") << "mine\n";
+  BOOST_TEST(run("three.xyz --output kept").exit_code == 1);
+  std::vector<std::string> left;
+  for(const auto& entry : fs::directory_iterator(work / "kept"))
+    left.push_back(entry.path().filename().string());
+  BOOST_TEST(left == std::vector<std::string>{"keep.txt"}, boost::test_tools::per_element());
+}
+
+// A crash (here an abort raised by a test hook after the first file was
+// written) leaves the output folder as it was, and no temporary directory.
+BOOST_AUTO_TEST_CASE(a_crash_leaves_the_output_folder_as_it_was)
+{
+  auto temporaries = [] {
+    std::size_t n = 0;
+    for(const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+      n += entry.path().filename().string().rfind("conformal_curvature_", 0) == 0 ? 1 : 0;
+    return n;
+  };
+  const std::size_t before = temporaries();
+  fs::remove_all(work / "crash_kept");
+  fs::create_directories(work / "crash_kept");
+  std::ofstream(work / "crash_kept" / "keep.txt") << "mine\n";
+  fs::remove_all(work / "crash_new");
+  const Run kept = run("--alpha 50% --rings 1 --output crash_kept --quiet", "CONFORMAL_CURVATURE_TEST_CRASH=1");
+  const Run fresh = run("--alpha 50% --rings 1 --output crash_new/out --quiet", "CONFORMAL_CURVATURE_TEST_CRASH=1");
+  BOOST_TEST(kept.exit_code != 0);
+  BOOST_TEST(fresh.exit_code != 0);
+  std::vector<std::string> left;
+  for(const auto& entry : fs::directory_iterator(work / "crash_kept"))
+    left.push_back(entry.path().filename().string());
+  BOOST_TEST(left == std::vector<std::string>{"keep.txt"}, boost::test_tools::per_element());
+  BOOST_TEST(!fs::exists(work / "crash_new" / "out"));
+  BOOST_TEST(temporaries() == before);
+}
+
+namespace {
+
+std::vector<Point> sphere(std::size_t n, double scale = 1, K::Vector_3 offset = K::Vector_3(0, 0, 0))
+{
+  std::vector<Point> p = cas3_test::ellipsoid_sample<Point>(n, 1, 1, 1, 0, 1, 1e-4);
+  for(Point& x : p)
+    x = Point(x.x() * scale, x.y() * scale, x.z() * scale) + offset;
+  return p;
+}
+
+// Runs the program on `points` (written as `name`) at the automatic scale,
+// 2 rings, and returns its CSV.
+Csv run_on(const std::string& name, const std::vector<Point>& points, const std::string& extra = "")
+{
+  write_xyz(work / name, points);
+  fs::remove_all(work / "out_ok");
+  const Run r = run(name + " --alpha auto --rings 2 --output out_ok --quiet " + extra);
+  BOOST_TEST_INFO(name << ": " << r.err);
+  BOOST_REQUIRE_EQUAL(r.exit_code, 0);
+  return read_csv(work / "out_ok" / "curvatures.csv");
+}
+
+} // namespace
+
+// Extreme but valid input: a documented result each.
+BOOST_AUTO_TEST_CASE(extreme_input_gives_the_normalised_answer)
+{
+  const std::vector<Point> clean = sphere(2000);
+  const Csv reference = run_on("clean.xyz", clean);
+  std::size_t on = 0;
+  for(const auto& row : reference.rows)
+    on += row[6] == 1 ? 1 : 0;
+  BOOST_TEST(on > 1900u);
+
+  // one far outlier (the former crash): flagged, the rest unchanged
+  for(double far : {1e6, 1e20, 1e160, 1e200})
+  {
+    std::vector<Point> p = clean;
+    p.push_back(Point(far, 0, 0));
+    const Csv csv = run_on("outlier.xyz", p);
+    BOOST_TEST_INFO("outlier at " << far);
+    BOOST_REQUIRE_EQUAL(csv.rows.size(), 2001u);
+    BOOST_TEST(csv.rows[2000][6] == 0);   // not on the surface
+    BOOST_TEST(csv.rows[2000][20] == 1);  // flagged
+    for(std::size_t i = 0; i < 2000; ++i)
+    {
+      BOOST_REQUIRE(csv.rows[i][6] == reference.rows[i][6]);
+      BOOST_REQUIRE(csv.rows[i][20] == 0);
+      for(std::size_t c = 10; c < 14; ++c)  // H, K, k1, k2
+        BOOST_REQUIRE((std::isnan(reference.rows[i][c]) ||
+                       std::abs(csv.rows[i][c] - reference.rows[i][c]) <= 1e-9));
+    }
+  }
+
+  // scaled by 1e300, 1e-300, offset by 1e7: the unit answer, scaled
+  struct Scaled { double scale; K::Vector_3 offset; };
+  for(const Scaled& t : {Scaled{1e300, K::Vector_3(0, 0, 0)}, Scaled{1e-300, K::Vector_3(0, 0, 0)},
+                         Scaled{1, K::Vector_3(1e7, -2e7, 3e6)}})
+  {
+    const Csv csv = run_on("scaled.xyz", sphere(2000, t.scale, t.offset));
+    BOOST_TEST_INFO("scale " << t.scale << ", offset " << t.offset);
+    std::size_t same = 0;
+    for(std::size_t i = 0; i < 2000; ++i)
+      if(csv.rows[i][6] == 1 && reference.rows[i][6] == 1 &&
+         std::abs(csv.rows[i][10] * t.scale / reference.rows[i][10] - 1) < (t.scale == 1 ? 1e-4 : 1e-6))
+        ++same;
+    BOOST_TEST(same >= on * 99 / 100);
+  }
+
+  // CRLF line ends: the same CSV as LF
+  {
+    std::ifstream in(work / "clean.xyz");
+    std::ofstream out(work / "crlf.xyz", std::ios::binary);
+    std::string line;
+    while(std::getline(in, line))
+      out << line << "\r\n";
+  }
+  fs::remove_all(work / "out_crlf");
+  fs::remove_all(work / "out_lf");
+  BOOST_REQUIRE_EQUAL(run("crlf.xyz --alpha auto --rings 2 --output out_crlf --quiet").exit_code, 0);
+  BOOST_REQUIRE_EQUAL(run("clean.xyz --alpha auto --rings 2 --output out_lf --quiet").exit_code, 0);
+  BOOST_TEST(bytes_of(work / "out_crlf" / "curvatures.csv") == bytes_of(work / "out_lf" / "curvatures.csv"));
+
+  // every point twice: both copies get the same values
+  {
+    std::vector<Point> twice = clean;
+    twice.insert(twice.end(), clean.begin(), clean.end());
+    const Csv csv = run_on("twice.xyz", twice);
+    for(std::size_t i = 0; i < 2000; ++i)
+      BOOST_REQUIRE((csv.rows[i][6] == csv.rows[i + 2000][6] &&
+                     (std::isnan(csv.rows[i][10]) || csv.rows[i][10] == csv.rows[i + 2000][10])));
+  }
+
+  // two far-apart spheres, a thin slab, mixed huge and tiny coordinates:
+  // each run succeeds with one row per point and no outlier
+  {
+    std::vector<Point> two = sphere(1000);
+    const std::vector<Point> other = sphere(1000, 1, K::Vector_3(1e6, 0, 0));
+    two.insert(two.end(), other.begin(), other.end());
+    const Csv csv = run_on("two_clusters.xyz", two);
+    BOOST_TEST(csv.rows.size() == 2000u);
+    std::size_t on_both[2] = {0, 0};
+    for(std::size_t i = 0; i < 2000; ++i)
+    {
+      BOOST_REQUIRE(csv.rows[i][20] == 0);
+      on_both[i / 1000] += csv.rows[i][6] == 1 ? 1 : 0;
+    }
+    BOOST_TEST(on_both[0] + on_both[1] > 0u);
+  }
+  {
+    std::vector<Point> slab;
+    for(int i = 0; i < 30; ++i)
+      for(int j = 0; j < 30; ++j)
+        slab.push_back(Point(i, j, 1e-3 * ((i * 7 + j * 3) % 5)));
+    const Csv csv = run_on("slab.xyz", slab);
+    BOOST_TEST(csv.rows.size() == 900u);
+  }
+  {
+    std::vector<Point> mixed = clean;
+    mixed[5] = Point(1e-300, mixed[5].y(), mixed[5].z());
+    mixed.push_back(Point(1e300, -1e300, 1e300));
+    const Csv csv = run_on("mixed.xyz", mixed);
+    BOOST_TEST(csv.rows[2000][20] == 1);
+    BOOST_TEST(csv.rows[5][20] == 0);
+  }
+  // exactly cospherical points (the 8 corners of a cube, 6 face centres
+  // pushed onto the sphere): a valid run
+  {
+    std::vector<Point> co;
+    for(int i = 0; i < 8; ++i)
+      co.push_back(Point(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1));
+    const double r = std::sqrt(3.0);
+    for(int d = 0; d < 3; ++d)
+      for(double s : {-r, r})
+        co.push_back(Point(d == 0 ? s : 0, d == 1 ? s : 0, d == 2 ? s : 0));
+    const Csv csv = run_on("cospherical.xyz", co);
+    BOOST_TEST(csv.rows.size() == co.size());
+  }
+}
+
+// The same input gives the same bytes.
+BOOST_AUTO_TEST_CASE(runs_are_deterministic)
+{
+  for(const char* dir : {"first", "second"})
+  {
+    fs::remove_all(work / dir);
+    BOOST_REQUIRE_EQUAL(run(std::string("--output ") + dir + " --quiet --alpha 35%,auto --rings 1,2").exit_code, 0);
+  }
+  std::size_t compared = 0;
+  for(const auto& entry : fs::directory_iterator(work / "first"))
+  {
+    const std::string name = entry.path().filename().string();
+    BOOST_TEST_INFO(name);
+    BOOST_TEST(bytes_of(entry.path()) == bytes_of(work / "second" / name));
+    ++compared;
+  }
+  BOOST_TEST(compared == 5u);  // 2 scales x 2 rings, and the CSV
+}
+
+// Normals in the input are read: .xyz with 6 columns, .pwn, PLY nx ny nz.
+BOOST_AUTO_TEST_CASE(inputs_with_normals_run)
+{
+  const std::vector<Point> p = sphere(500);
+  {
+    std::ofstream xyz(work / "normals.xyz"), pwn(work / "normals.pwn"), ply(work / "normals.ply");
+    ply << "ply\nformat ascii 1.0\nelement vertex " << p.size()
+        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double nx\nproperty double ny\n"
+           "property double nz\nend_header\n";
+    for(std::ostream* out : {static_cast<std::ostream*>(&xyz), static_cast<std::ostream*>(&pwn),
+                             static_cast<std::ostream*>(&ply)})
+      for(const Point& x : p)
+        *out << std::setprecision(17) << x << " " << x << "\n";
+  }
+  for(const char* name : {"normals.xyz", "normals.pwn", "normals.ply"})
+  {
+    fs::remove_all(work / "out_n");
+    const Run r = run(std::string(name) + " --alpha auto --rings 1 --output out_n --quiet");
+    BOOST_TEST_INFO(name << ": " << r.err);
+    BOOST_TEST(r.exit_code == 0);
+    BOOST_TEST(read_csv(work / "out_n" / "curvatures.csv").rows.size() == p.size());
   }
 }
 

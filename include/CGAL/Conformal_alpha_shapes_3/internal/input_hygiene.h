@@ -1,0 +1,274 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_INPUT_HYGIENE_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_INPUT_HYGIENE_H
+
+// Input hygiene: what the pipeline does to the input points before it builds
+// the conformal alpha shape (the manual, section "Input rules"):
+//
+// 1. Every coordinate must be finite; otherwise std::invalid_argument names
+//    the first offending index.
+// 2. Isolated far outliers are removed and flagged. With d_k(p) the distance
+//    from p to its k-th nearest other input point (k = 6; coincident points
+//    count), a point is an isolated outlier when
+//      d_k(p) > 30 * m, m the median of the positive d_k over all points, and
+//      d_k(p) > 30 * the median of d_k over p's k nearest neighbours.
+//    The second condition keeps the points of a real cluster that is just
+//    sparser than the rest (their neighbours are as sparse as they are); a
+//    group of at most k points far from everything else is removed (no
+//    group that small can make a surface patch of its own). Points whose
+//    distance to the robust centre exceeds 1e50 robust sizes are outliers
+//    without further test (no double construction could hold both them and
+//    the rest). With fewer than 2 (k + 1) points, or when fewer than half
+//    the points have a positive d_k (mostly duplicates), no point is tested.
+// 3. The kept points are recentred on a robust centre c, the per-axis
+//    median of the kept points, and divided by a robust size s, a power of
+//    two within a factor 2 of the median over the kept points of the
+//    largest coordinate difference to c (the largest distance to c when
+//    that median is 0; 1 when all kept points coincide). Multiplying by a
+//    power of two is exact, so the normalised points are (p - c) / s
+//    rounded once, whatever the magnitude: georeferenced offsets (1e6-1e7),
+//    1e300 and 1e-300 scales all give points of size about 1.
+//
+// Back to input units: positions p = c + s q, lengths times s, mean and
+// principal curvatures divided by s, Gaussian curvature divided by s^2;
+// normals and directions are unchanged. (At extreme scales the Gaussian
+// curvature may fall out of double's range: 1e300 gives K about 1e-600,
+// which rounds to 0.)
+
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+// The parameters of the outlier rule (see above).
+struct Input_hygiene_options
+{
+  unsigned int k = 6;             // which neighbour measures isolation
+  double isolation_factor = 30;   // how many median distances make a point isolated
+  bool remove_outliers = true;
+};
+
+// The points to build on and what maps them back to the input.
+template <class Kernel>
+struct Normalized_input
+{
+  typedef typename Kernel::Point_3 Point;
+  typedef typename Kernel::Vector_3 Vector;
+
+  std::vector<Point> points;              // the kept points, normalised
+  std::vector<std::size_t> input_index;   // kept point -> input index
+  std::vector<std::size_t> outliers;      // input indices of the removed points, increasing
+  std::vector<bool> is_outlier;           // by input index
+  std::array<double, 3> centre = {{0, 0, 0}};  // c, in input units
+  int size_exponent = 0;                  // s = 2^size_exponent
+
+  double size() const { return std::ldexp(1.0, size_exponent); }
+
+  // input units <-> normalised units
+  Point to_input(const Point& q) const
+  {
+    return Point(centre[0] + std::ldexp(q.x(), size_exponent), centre[1] + std::ldexp(q.y(), size_exponent),
+                 centre[2] + std::ldexp(q.z(), size_exponent));
+  }
+  Point to_normalized(const Point& p) const
+  {
+    return Point(difference(p.x(), centre[0]), difference(p.y(), centre[1]), difference(p.z(), centre[2]));
+  }
+  double length_to_input(double l) const { return std::ldexp(l, size_exponent); }
+  // mean and principal curvatures
+  double curvature_to_input(double k) const { return std::ldexp(k, -size_exponent); }
+  double gaussian_curvature_to_input(double k) const { return std::ldexp(k, -2 * size_exponent); }
+
+  // (x - c) / s without overflow: the halves never overflow, and halving
+  // and scaling by 2^(1 - e) are exact above the subnormal range.
+  double difference(double x, double c) const
+  { return std::ldexp(x / 2 - c / 2, 1 - size_exponent); }
+};
+
+namespace hygiene_detail {
+
+inline double median(std::vector<double> v)
+{
+  if(v.empty())
+    return 0;
+  const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+// per-axis median of the points whose indices are in `which`
+template <class Point>
+std::array<double, 3> median_centre(const std::vector<Point>& p, const std::vector<std::size_t>& which)
+{
+  std::array<double, 3> c = {{0, 0, 0}};
+  std::vector<double> v(which.size());
+  for(int d = 0; d < 3; ++d)
+  {
+    for(std::size_t i = 0; i < which.size(); ++i)
+      v[i] = CGAL::to_double(p[which[i]][d]);
+    c[d] = median(v);
+  }
+  return c;
+}
+
+// the exponent e of the robust size 2^e (see the header comment)
+template <class Point>
+int size_exponent(const std::vector<Point>& p, const std::vector<std::size_t>& which,
+                  const std::array<double, 3>& c)
+{
+  // halved coordinate differences: no overflow
+  std::vector<double> half_radius(which.size());
+  for(std::size_t i = 0; i < which.size(); ++i)
+  {
+    double r = 0;
+    for(int d = 0; d < 3; ++d)
+      r = (std::max)(r, std::abs(CGAL::to_double(p[which[i]][d]) / 2 - c[d] / 2));
+    half_radius[i] = r;
+  }
+  double h = median(half_radius);
+  if(!(h > 0))
+    h = half_radius.empty() ? 0 : *std::max_element(half_radius.begin(), half_radius.end());
+  if(!(h > 0))
+    return 0;
+  return std::ilogb(h) + 2;  // 2^e within [2h, 4h): the median radius maps into [0.5, 1)
+}
+
+} // namespace hygiene_detail
+
+// Normalises `input` and removes isolated far outliers (rules above).
+// Throws std::invalid_argument naming the first point with a NaN or
+// infinite coordinate.
+template <class Kernel, class PointRange>
+Normalized_input<Kernel> normalize_input(const PointRange& input,
+                                         const Input_hygiene_options& options = Input_hygiene_options())
+{
+  typedef typename Kernel::Point_3 Point;
+  using hygiene_detail::median;
+  Normalized_input<Kernel> result;
+  const std::vector<Point> p(input.begin(), input.end());
+  const std::size_t n = p.size();
+  for(std::size_t i = 0; i < n; ++i)
+    for(int d = 0; d < 3; ++d)
+      if(!std::isfinite(CGAL::to_double(p[i][d])))
+        throw std::invalid_argument("input point " + std::to_string(i) + " has a coordinate that is NaN or infinite");
+
+  std::vector<std::size_t> all(n);
+  for(std::size_t i = 0; i < n; ++i)
+    all[i] = i;
+  result.is_outlier.assign(n, false);
+
+  const unsigned int k = (std::max)(options.k, 1u);
+  if(options.remove_outliers && n >= 2 * (std::size_t(k) + 1))
+  {
+    // a first normalisation on all points, for the distances
+    result.centre = hygiene_detail::median_centre(p, all);
+    result.size_exponent = hygiene_detail::size_exponent(p, all, result.centre);
+    std::vector<Point> q;
+    std::vector<std::size_t> near;  // indices of the points tested by distances
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Point x = result.to_normalized(p[i]);
+      const double r = (std::max)({std::abs(x.x()), std::abs(x.y()), std::abs(x.z())});
+      if(r > 1e50)
+        result.is_outlier[i] = true;
+      else
+      {
+        near.push_back(i);
+        q.push_back(x);
+      }
+    }
+
+    // distance to the k-th nearest other point, and the k neighbours
+    typedef CGAL::Search_traits_3<Kernel> Base_traits;
+    typedef typename CGAL::Pointer_property_map<Point>::const_type Point_map;
+    typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
+    typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+    typedef typename Search::Tree Tree;
+    typedef typename Search::Distance Distance;
+    std::vector<double> dk(q.size(), 0);
+    std::vector<std::size_t> neighbours(q.size() * k);
+    if(q.size() > k)
+    {
+      const std::vector<Point>& const_q = q;
+      const Point_map point_map = CGAL::make_property_map(const_q);
+      std::vector<std::size_t> ids(q.size());
+      for(std::size_t i = 0; i < q.size(); ++i)
+        ids[i] = i;
+      Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(point_map));
+      tree.build();
+      const Distance distance(point_map);
+      for(std::size_t i = 0; i < q.size(); ++i)
+      {
+        Search search(tree, q[i], k + 1, 0, true, distance);
+        std::size_t found = 0;
+        bool self_skipped = false;
+        for(const auto& hit : search)
+        {
+          if(!self_skipped && hit.first == i)
+          {
+            self_skipped = true;
+            continue;
+          }
+          if(found < k)
+          {
+            neighbours[i * k + found++] = hit.first;
+            dk[i] = std::sqrt(hit.second);
+          }
+        }
+        for(; found < k; ++found)  // fewer than k others
+          neighbours[i * k + found] = i;
+      }
+      std::vector<double> positive;
+      for(double d : dk)
+        if(d > 0)
+          positive.push_back(d);
+      if(positive.size() * 2 >= dk.size())
+      {
+        const double m = median(positive);
+        std::vector<double> around(k);
+        for(std::size_t i = 0; i < q.size(); ++i)
+        {
+          if(!(dk[i] > options.isolation_factor * m))
+            continue;
+          for(unsigned int j = 0; j < k; ++j)
+            around[j] = dk[neighbours[i * k + j]];
+          if(dk[i] > options.isolation_factor * median(around))
+            result.is_outlier[near[i]] = true;
+        }
+      }
+    }
+  }
+
+  for(std::size_t i = 0; i < n; ++i)
+    (result.is_outlier[i] ? result.outliers : result.input_index).push_back(i);
+
+  // the final normalisation, on the kept points only
+  result.centre = hygiene_detail::median_centre(p, result.input_index);
+  result.size_exponent = hygiene_detail::size_exponent(p, result.input_index, result.centre);
+  result.points.reserve(result.input_index.size());
+  for(std::size_t i : result.input_index)
+    result.points.push_back(result.to_normalized(p[i]));
+  return result;
+}
+
+} // namespace internal
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_INPUT_HYGIENE_H
