@@ -64,7 +64,10 @@ cells (`REGULAR` or `SINGULAR` at `a`): a facet whose value exceeds `a` is
 never taken. The front only grows where the surface stays a manifold, so a
 noisy layer gives one sheet, not a shell with an inner wall, and an open
 scan one sheet with a border, not a two-sided slab. Vertices the front
-cannot attach are left off the surface (`number_of_points_off_surface`).
+cannot attach are left off the surface (`number_of_points_off_surface`);
+so are, below the scale at which the surface closes, pockets too small to
+carry curvature once they are all the front finds (the manual, "The
+Advancing Front").
 
 Orientation (the manual, "Orientation"): with `reference_normals`, every
 sheet faces the side that the majority of the reference normals at its

@@ -58,18 +58,52 @@ struct Conformal_cell_values
   double cell = std::numeric_limits<double>::infinity();
 };
 
-// The front's priority: the conformal value of a facet of the complex at `a`
-// that is on the boundary of the union of its cells (REGULAR or SINGULAR);
-// other facets are never taken.
+// Each new part of the front starts from the smallest facet whose vertices
+// are all off the surface, found by a scan over every facet. Below the scale
+// at which the surface closes, the complex is a sponge of small pockets and
+// those scans would make the front quadratic: seeding stops once the last
+// 16 parts held fewer than 8 faces each on average (they are pockets too
+// small to carry curvature), or after 64 + n / 1000 parts.
+struct Front_seeding
+{
+  int maximum_parts;
+  std::vector<int> faces_before_part;  // by part, the front's faces when it was seeded
+  bool stopped = false;
+
+  explicit Front_seeding(std::size_t number_of_vertices) : maximum_parts(64 + int(number_of_vertices / 1000)) {}
+
+  // Called with every seed candidate: false once seeding has stopped.
+  template <class AdvancingFront>
+  bool may_seed(const AdvancingFront& front)
+  {
+    const int part = front.number_of_connected_components();
+    if(!stopped && part > int(faces_before_part.size()))
+    {
+      faces_before_part.push_back(front.number_of_facets());
+      const std::size_t n = faces_before_part.size();
+      stopped = int(n) > maximum_parts
+                || (n > 16 && faces_before_part[n - 1] - faces_before_part[n - 17] < 16 * 8);
+    }
+    return !stopped;
+  }
+};
+
+// The front's priority: the conformal value of a facet of the complex at
+// `a`; other facets are never taken, nor any seed once seeding has stopped.
 struct Conformal_priority
 {
   double a;
+  Front_seeding* seeding;
 
   template <class AdvancingFront, class Cell_handle>
-  double operator()(const AdvancingFront&, Cell_handle& c, const int& i) const
+  double operator()(const AdvancingFront& front, Cell_handle& c, const int& i) const
   {
     const double value = c->info().facet[i];
-    return value <= a ? value : std::numeric_limits<double>::infinity();
+    if(!(value <= a))
+      return std::numeric_limits<double>::infinity();
+    const bool seed = c->vertex((i + 1) & 3)->is_exterior() && c->vertex((i + 2) & 3)->is_exterior()
+                      && c->vertex((i + 3) & 3)->is_exterior();
+    return !seed || seeding->may_seed(front) ? value : std::numeric_limits<double>::infinity();
   }
 };
 
@@ -123,7 +157,8 @@ Advancing_front_soup advancing_front_soup(const Cas& cas, double a)
   triangulation.set_infinite_vertex(
     triangulation.tds().copy_tds(cas.tds(), cas.infinite_vertex(), Convert_vertex{infinite, no_vertex},
                                  Convert_cell{&cas}));
-  Front front(triangulation, Conformal_priority{a});
+  Front_seeding seeding(cas.number_of_vertices());
+  Front front(triangulation, Conformal_priority{a, &seeding});
   front.run();
 
   typedef typename Front::Triangulation_data_structure_2 Tds_2;
