@@ -9,9 +9,12 @@
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/jet_smooth_point_set.h>
 
+#include <CGAL/number_utils.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -61,14 +64,14 @@ inline double chi_squared_median_ratio(double nu)
 }
 
 // The residual variance of a least-squares cubic height function over the
-// first `k` of `neighbors` (the query point first, then by distance), in
+// first `k` (at most 32) of `neighbors` (the query point first, then by distance), in
 // the PCA frame of those points, and the mean tangential distance to the
 // 6 nearest. Returns false on a degenerate neighbourhood.
 inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, int k,
                                double& variance, double& spacing)
 {
   const int coefficients = 10;
-  if(int(neighbors.size()) < k || k <= coefficients)
+  if(int(neighbors.size()) < k || k <= coefficients || k > 32)
     return false;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for(int i = 0; i < k; ++i)
@@ -85,17 +88,27 @@ inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, in
     size = (std::max)(size, (neighbors[i] - neighbors[0]).norm());
   if(!(size > 0))
     return false;
-  Eigen::MatrixXd design(k, coefficients);
-  Eigen::VectorXd height(k);
+  // least squares by the fixed-size normal equations: the coordinates are
+  // scaled into [-1, 1], where cubic monomials are well enough conditioned
+  typedef Eigen::Matrix<double, 10, 1> Monomials;
+  std::array<Monomials, 32> rows;
+  Eigen::Matrix<double, 10, 10> normal = Eigen::Matrix<double, 10, 10>::Zero();
+  Monomials right = Monomials::Zero();
+  std::array<double, 32> height;
   for(int i = 0; i < k; ++i)
   {
-    const Eigen::Vector3d d = (neighbors[i] - neighbors[0]) / size;  // scaled for conditioning
+    const Eigen::Vector3d d = (neighbors[i] - neighbors[0]) / size;
     const double x = d.dot(u), y = d.dot(v);
-    height(i) = d.dot(n);
-    design.row(i) << 1, x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+    height[i] = d.dot(n);
+    rows[i] << 1, x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+    normal.selfadjointView<Eigen::Lower>().rankUpdate(rows[i]);
+    right += height[i] * rows[i];
   }
-  const Eigen::VectorXd residual = design * design.colPivHouseholderQr().solve(height) - height;
-  variance = residual.squaredNorm() * size * size / double(k - coefficients);
+  const Monomials coefficients_fitted = normal.selfadjointView<Eigen::Lower>().ldlt().solve(right);
+  double squared_residual = 0;
+  for(int i = 0; i < k; ++i)
+    squared_residual += CGAL::square(rows[i].dot(coefficients_fitted) - height[i]);
+  variance = squared_residual * size * size / double(k - coefficients);
   spacing = 0;
   for(int i = 1; i <= 6; ++i)
   {
@@ -112,7 +125,7 @@ inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, in
 \ingroup PkgConformalAlphaShapes3Multiscale
 
 The noise of a point sample of a surface, relative to its spacing (the
-manual, "Noise"). At up to 5000 points spread over the sample, a cubic
+manual, "Noise"). At up to 2000 points spread over the sample, a cubic
 height function is fitted by least squares to the 16 (and 24) nearest
 points in their principal frame; the median residual variance, made
 unbiased for Gaussian noise, gives the noise. A cubic follows curvature and
@@ -134,7 +147,7 @@ Noise_estimate estimate_noise(const PointRange& points)
   if(all.size() <= std::size_t(large))
     return estimate;
   const typename Search::Tree tree(all.begin(), all.end());
-  const std::size_t samples = (std::min)(all.size(), std::size_t(5000));
+  const std::size_t samples = (std::min)(all.size(), std::size_t(2000));
   std::vector<double> variances_small, variances_large;
   double spacing_sum = 0;
   std::vector<Eigen::Vector3d> neighbors;
