@@ -12,9 +12,14 @@
 #include <CGAL/Triangulation_data_structure_3.h>
 #include <CGAL/Unique_hash_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <numeric>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -88,6 +93,27 @@ struct Front_seeding
   }
 };
 
+// A number in [0, 1) that depends only on the three vertices of a facet:
+// the front orders equal priorities by memory address, so that exact ties
+// (frequent on regular samples) would make the surface depend on how the
+// input was allocated; a relative nudge of 1e-12 by this number breaks them
+// the same way on every run.
+inline double facet_tie_breaker(std::size_t u, std::size_t v, std::size_t w)
+{
+  if(u > v) std::swap(u, v);
+  if(v > w) std::swap(v, w);
+  if(u > v) std::swap(u, v);
+  std::uint64_t h = 0x9E3779B97F4A7C15ull;
+  for(std::uint64_t x : {std::uint64_t(u), std::uint64_t(v), std::uint64_t(w)})
+  {
+    h ^= x + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+    h ^= h >> 31;
+  }
+  return double(h >> 11) / 9007199254740992.0;  // 2^53
+}
+
 // The front's priority: the conformal value of a facet of the complex at
 // `a`; other facets are never taken, nor any seed once seeding has stopped.
 struct Conformal_priority
@@ -103,9 +129,85 @@ struct Conformal_priority
       return std::numeric_limits<double>::infinity();
     const bool seed = c->vertex((i + 1) & 3)->is_exterior() && c->vertex((i + 2) & 3)->is_exterior()
                       && c->vertex((i + 3) & 3)->is_exterior();
-    return !seed || seeding->may_seed(front) ? value : std::numeric_limits<double>::infinity();
+    if(seed && !seeding->may_seed(front))
+      return std::numeric_limits<double>::infinity();
+    return value * (1 + 1e-12 * facet_tie_breaker(c->vertex((i + 1) & 3)->id(), c->vertex((i + 2) & 3)->id(),
+                                                  c->vertex((i + 3) & 3)->id()));
   }
 };
+
+// Puts the soup in an order that depends only on its triangles, not on the
+// order in which the front grew them (which follows memory addresses where
+// the front's own criteria tie): vertices by shape vertex, triangles
+// lexicographically, each starting at its smallest vertex.
+inline void put_in_canonical_order(Advancing_front_soup& soup)
+{
+  const std::size_t nv = soup.shape_vertex.size(), nt = soup.triangles.size();
+  typedef std::array<std::size_t, 3> Key;
+  auto sorted = [&](const std::array<std::size_t, 3>& t) {
+    Key k = {{soup.shape_vertex[t[0]], soup.shape_vertex[t[1]], soup.shape_vertex[t[2]]}};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  // a vertex standing for a shape vertex more than once is told apart by
+  // the smallest triangle it is on
+  const std::size_t big = std::size_t(-1);
+  std::vector<Key> first_triangle(nv, Key{{big, big, big}});
+  for(const std::array<std::size_t, 3>& t : soup.triangles)
+    for(std::size_t v : t)
+      first_triangle[v] = (std::min)(first_triangle[v], sorted(t));
+  std::vector<std::size_t> vertex_order(nv);
+  std::iota(vertex_order.begin(), vertex_order.end(), std::size_t(0));
+  std::sort(vertex_order.begin(), vertex_order.end(), [&](std::size_t x, std::size_t y) {
+    return std::tie(soup.shape_vertex[x], first_triangle[x]) < std::tie(soup.shape_vertex[y], first_triangle[y]);
+  });
+  std::vector<std::size_t> new_vertex(nv);
+  std::vector<std::size_t> shape_vertex(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    new_vertex[vertex_order[i]] = i;
+    shape_vertex[i] = soup.shape_vertex[vertex_order[i]];
+  }
+
+  // triangles renumbered and rotated to start at their smallest vertex,
+  // with their neighbours (opposite to each vertex) rotated alike
+  std::vector<std::array<std::size_t, 3> > triangles(nt), neighbors(nt);
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    std::array<std::size_t, 3> v;
+    for(int k = 0; k < 3; ++k)
+      v[k] = new_vertex[soup.triangles[t][k]];
+    const int r = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    for(int k = 0; k < 3; ++k)
+    {
+      triangles[t][k] = v[(k + r) % 3];
+      neighbors[t][k] = soup.neighbors[t][(k + r) % 3];
+    }
+  }
+  std::vector<std::size_t> triangle_order(nt);
+  std::iota(triangle_order.begin(), triangle_order.end(), std::size_t(0));
+  std::sort(triangle_order.begin(), triangle_order.end(),
+            [&](std::size_t x, std::size_t y) { return triangles[x] < triangles[y]; });
+  std::vector<std::size_t> new_triangle(nt);
+  for(std::size_t i = 0; i < nt; ++i)
+    new_triangle[triangle_order[i]] = i;
+  Advancing_front_soup ordered;
+  ordered.shape_vertex = std::move(shape_vertex);
+  ordered.triangles.reserve(nt);
+  ordered.neighbors.reserve(nt);
+  ordered.values.reserve(nt);
+  for(std::size_t t : triangle_order)
+  {
+    ordered.triangles.push_back(triangles[t]);
+    std::array<std::size_t, 3> n = neighbors[t];
+    for(std::size_t& x : n)
+      if(x != Advancing_front_soup::no_neighbor)
+        x = new_triangle[x];
+    ordered.neighbors.push_back(n);
+    ordered.values.push_back(soup.values[t]);
+  }
+  soup = std::move(ordered);
+}
 
 template <class Cas>
 Advancing_front_soup advancing_front_soup(const Cas& cas, double a)
@@ -194,6 +296,7 @@ Advancing_front_soup advancing_front_soup(const Cas& cas, double a)
       n[k] = f->neighbor(k)->is_on_surface() ? soup_triangle[f->neighbor(k)] : Advancing_front_soup::no_neighbor;
     soup.neighbors.push_back(n);
   }
+  put_in_canonical_order(soup);
   return soup;
 }
 
