@@ -218,14 +218,29 @@ inline Denoising_plan denoising_plan(double noise)
 }
 
 /// \ingroup PkgConformalAlphaShapes3Multiscale
-/// Smooths `points` in place as `plan` says.
+/// Smooths `points` in place as `plan` says. Coincident points are smoothed
+/// once, as one (a jet fitted to copies of one point is undefined); a point
+/// whose fit is degenerate anyway (its neighbours on a line) stays where it
+/// is; nothing moves when there are no more distinct points than neighbours.
 template <class PointRange>
 void denoise(PointRange& points, const Denoising_plan& plan)
 {
-  if(std::size_t(std::distance(points.begin(), points.end())) <= plan.neighbors)
+  typedef typename PointRange::value_type Point;
+  std::vector<Point> distinct(points.begin(), points.end());
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  if(plan.passes == 0 || distinct.size() <= plan.neighbors)
     return;
+  std::vector<Point> smoothed = distinct;
   for(int pass = 0; pass < plan.passes; ++pass)
-    CGAL::jet_smooth_point_set<CGAL::Sequential_tag>(points, plan.neighbors);
+    CGAL::jet_smooth_point_set<CGAL::Sequential_tag>(smoothed, plan.neighbors);
+  for(Point& p : points)
+  {
+    const std::size_t i = std::size_t(std::lower_bound(distinct.begin(), distinct.end(), p) - distinct.begin());
+    const Point& q = smoothed[i];
+    if(std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z()))
+      p = q;
+  }
 }
 
 } // namespace Conformal_alpha_shapes_3
