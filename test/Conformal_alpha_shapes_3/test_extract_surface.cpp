@@ -317,6 +317,13 @@ typedef K::Vector_3 Vector;
 typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
 typedef CAS3::Multiscale_curvatures<K> Analysis;
 
+// Under the sanitizers (ten times slower), the sheets are checked on fewer points.
+#ifdef CAS3_SANITIZED
+const std::size_t sheet_points = 5000;
+#else
+const std::size_t sheet_points = 20000;
+#endif
+
 // Coverage and orientation at the automatic scale, through the pipeline.
 struct Sheet_facts
 {
@@ -357,8 +364,8 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
 // point is on one outward sheet.
 BOOST_AUTO_TEST_CASE(advancing_front_surface_on_clean_closed_samples)
 {
-  for(const Sample& s : {cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4),
-                         cas3_analytic::torus_truth_sample<Point, Vector>(20000, 1.0, 0.35)})
+  for(const Sample& s : {cas3_analytic::ellipsoid_truth_sample<Point, Vector>(sheet_points, 1.0, 0.7, 0.4),
+                         cas3_analytic::torus_truth_sample<Point, Vector>(sheet_points, 1.0, 0.35)})
   {
     const Cas cas(s.points.begin(), s.points.end());
     Surface_mesh mesh;
@@ -395,7 +402,7 @@ BOOST_AUTO_TEST_CASE(noisy_closed_surface_is_one_outward_sheet)
 {
   for(double noise : {0.1, 0.3})
   {
-    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4);
+    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(sheet_points, 1.0, 0.7, 0.4);
     cas3_analytic::add_normal_noise(s, noise, 7);
     BOOST_TEST_CONTEXT("noise " << noise)
     {
@@ -412,7 +419,7 @@ BOOST_AUTO_TEST_CASE(open_cap_is_one_consistent_sheet)
 {
   for(double noise : {0.0, 0.1})
   {
-    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4, 0.1);
+    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(sheet_points, 1.0, 0.7, 0.4, 0.1);
     cas3_analytic::add_normal_noise(s, noise, 8);
     BOOST_TEST_CONTEXT("noise " << noise)
     {
@@ -428,7 +435,7 @@ BOOST_AUTO_TEST_CASE(open_cap_is_one_consistent_sheet)
 // (here: the cap given inward normals; the kitten scan with its own).
 BOOST_AUTO_TEST_CASE(orientation_follows_input_normals)
 {
-  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(20000, 1.0, 0.7, 0.4, 0.1);
+  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(sheet_points, 1.0, 0.7, 0.4, 0.1);
   cas3_analytic::add_normal_noise(s, 0.1, 9);
   std::vector<Vector> inward;
   for(const Vector& n : s.normals)
