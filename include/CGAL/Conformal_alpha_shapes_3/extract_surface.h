@@ -59,9 +59,10 @@ a facade), whose faces are facets of the triangulation.
 
 The sheet is grown facet by facet from the smallest conformal value, as
 CGAL's `Advancing_front_surface_reconstruction` grows a surface, over the
-facets of the complex at `a` that are on the boundary of the union of its
-cells (`REGULAR` or `SINGULAR` at `a`): a facet whose value exceeds `a` is
-never taken. The front only grows where the surface stays a manifold, so a
+facets of the complex at `a`: a facet whose value exceeds `a` is never
+taken. (Facets between two cells of the complex are candidates too: under
+noise, the flat cells along the sampled surface enter the complex before
+the surface closes, and the facets between them are the surface.) The front only grows where the surface stays a manifold, so a
 noisy layer gives one sheet, not a shell with an inner wall, and an open
 scan one sheet with a border, not a two-sided slab. Vertices the front
 cannot attach are left off the surface (`number_of_points_off_surface`);

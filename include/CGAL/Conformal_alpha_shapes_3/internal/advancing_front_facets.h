@@ -27,7 +27,7 @@ namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
 // A triangle soup grown facet by facet over the Delaunay facets of the
-// conformal complex at scale `a` (the manual, "Surface extraction"), by
+// conformal complex at scale `a` (the manual, "The Advancing Front"), by
 // CGAL's Advancing_front_surface_reconstruction with the conformal value of a
 // facet as its priority: smaller values first, and no facet whose value
 // exceeds `a`. The front only grows where the surface stays an oriented
@@ -53,14 +53,12 @@ struct Advancing_front_soup
   static constexpr std::size_t no_neighbor = std::size_t(-1);
 };
 
-// The values an advancing-front cell carries: the conformal value of each
-// facet and of the cell; cells the front creates while removing a vertex
-// have none (infinite: never a candidate).
+// The conformal values of an advancing-front cell's facets; cells the front
+// creates while removing a vertex have none (infinite: never a candidate).
 struct Conformal_cell_values
 {
   std::array<double, 4> facet{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                                std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
-  double cell = std::numeric_limits<double>::infinity();
 };
 
 // Each new part of the front starts from the smallest facet whose vertices
@@ -247,8 +245,6 @@ Advancing_front_soup advancing_front_soup(const Cas& cas, double a)
     {
       const typename Cas::Cell_handle h = cas->tds().cells().iterator_to(const_cast<Shape_cell&>(c));
       Conformal_cell_values& values = d.info();
-      const bool infinite_cell = cas->is_infinite(h);
-      values.cell = infinite_cell ? std::numeric_limits<double>::infinity() : cas->conformal_alpha(h);
       for(int i = 0; i < 4; ++i)
         values.facet[i] = cas->is_infinite(h, i) ? std::numeric_limits<double>::infinity()
                                                  : double(cas->conformal_alpha(h, i));
