@@ -43,8 +43,8 @@ void run(const std::string& name, const std::vector<Point>& pts)
       CAS3::Multiscale_curvatures<K>::Surface surface;
       analysis.extract_surface(analysis.alpha(CAS3::Scale::quantile(q)), surface);
       for(int rings : {1, 2})
-        for(const auto& p : analysis.estimate_curvatures(surface, rings))
-          on_surface += p.on_surface ? 1 : 0;
+        for(const auto& p : analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(rings)))
+          on_surface += p.on_surface() ? 1 : 0;
     }
   }
   const double seconds = total.seconds(), mib = total.peak_mib();

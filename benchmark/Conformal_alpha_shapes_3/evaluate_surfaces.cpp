@@ -96,13 +96,13 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
   std::vector<Layer> layers;
   for(int ring : rings)
   {
-    const std::vector<CAS3::Point_curvature<Kernel> > per_point = analysis.estimate_curvatures(surface, ring);
+    const std::vector<CAS3::Point_curvature<Kernel> > per_point = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(ring));
     Layer layer;
     layer.ring = ring;
     layer.components = components;
     for(const CAS3::Point_curvature<Kernel>& p : per_point)
     {
-      const bool ok = p.on_surface;
+      const bool ok = p.on_surface();
       layer.normal.push_back(ok ? p.normal : Vector(nan_value, nan_value, nan_value));
       layer.H.push_back(ok ? double(p.mean_curvature) : nan_value);
       layer.K.push_back(ok ? double(p.gaussian_curvature) : nan_value);

@@ -1,8 +1,9 @@
 // conformal_curvature: multi-scale curvature of a point cloud, end to end.
-// Run with --help for the usage. Writes, into the output directory, one PLY
-// surface per (scale, ring size) with per-vertex normal, curvatures and a
-// colour ramp of the mean curvature, and one CSV with a row per input point
-// per (scale, ring size); prints a summary table on stdout.
+// Run with --help for the usage. Writes, into the output directory, a binary
+// PLY point cloud with every input point's values at every scale and
+// neighbourhood, one binary PLY surface per scale with the same values per
+// vertex, and on request a CSV with a row per input point per layer; prints
+// a summary table on stdout.
 #include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
@@ -10,6 +11,7 @@
 #include <CGAL/IO/Color.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
+#include "cas3_curvature_colors.h"
 #include "cas3_read_point_cloud.h"
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -28,6 +31,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -41,17 +45,22 @@ typedef CAS3::Multiscale_curvatures<K> Analysis;
 namespace {
 
 const char* const usage =
-  "usage: conformal_curvature [INPUT] [--alpha LIST] [--rings LIST] [--estimator NAME]\n"
-  "                           [--denoise MODE] [--denoise-neighbors K]\n"
-  "                           [--extraction NAME] [--output DIR] [--quiet] [--help]\n"
+  "usage: conformal_curvature [INPUT] [--alpha LIST] [--radius LIST] [--rings LIST]\n"
+  "                           [--estimator NAME] [--denoise MODE] [--denoise-neighbors K]\n"
+  "                           [--extraction NAME] [--output DIR] [--csv] [--quiet] [--help]\n"
   "\n"
   "Multi-scale curvature of a point cloud on its conformal alpha shape.\n"
   "  INPUT            .xyz, .pwn, .ply, .off or .obj (meshes: their vertices);\n"
   "                   default: the bundled Stanford bunny sample\n"
-  "  --alpha LIST     comma list of scales: values > 0 (0.5), quantiles of the\n"
-  "                   facet values in (0%, 100%] (25%) and/or auto;\n"
-  "                   default 10%,25%,35%,50%\n"
-  "  --rings LIST     comma list of ring sizes from 1 to 100; default 1,2\n"
+  "  --alpha LIST     comma list of conformal scales a: values > 0 (0.5),\n"
+  "                   quantiles of the facet values in (0%, 100%] (25%; the\n"
+  "                   paper's figures use 10%,25%,35%,50%) and/or auto; default auto\n"
+  "  --radius LIST    comma list of neighbourhood radii of the curvature fit:\n"
+  "                   model units (0.01), multiples of the measured sample\n"
+  "                   spacing (4s) and/or auto (chosen per point from the data);\n"
+  "                   default auto,2s,4s,8s,16s unless --rings is given\n"
+  "  --rings LIST     comma list of ring sizes from 1 to 100, instead of or\n"
+  "                   besides radii\n"
   "  --estimator NAME quadric (default), euler-least-squares or paper\n"
   "  --denoise MODE   auto (default: smooth when the estimated noise exceeds\n"
   "                   0.02 x spacing), on or off\n"
@@ -60,9 +69,13 @@ const char* const usage =
   "  --extraction NAME front (default: one sheet per part, open or closed)\n"
   "                   or solid (the boundary of the enclosed solid)\n"
   "  --output DIR     default ./conformal_curvature_out\n"
+  "  --csv            also write DIR/curvatures.csv, a row per point per layer\n"
   "  --quiet          no progress and no summary\n"
-  "Writes DIR/surface_<scale>_rings<k>.ply per scale and ring size, and\n"
-  "DIR/curvatures.csv with one row per input point per (scale, ring size).\n"
+  "Writes DIR/curvatures.ply (binary point cloud: per point x y z, outlier,\n"
+  "and per layer L = [scale_]neighbourhood, e.g. r4s or 25pct_k2: nx_L ny_L\n"
+  "nz_L H_L K_L k1_L k2_L d1x_L .. d2z_L radius_L distance_L source_L, where\n"
+  "source 0 = the point's own surface vertex, 1 = the nearest surface point,\n"
+  "2 = no value) and DIR/surface_<scale>.ply per scale.\n"
   "The points are recentred and rescaled before the work (results are in the\n"
   "input's units); isolated far outliers are left out and get outlier = 1.\n"
   "A failed run exits with status 1 and one line on stderr, and leaves DIR\n"
@@ -77,14 +90,15 @@ struct Failure : std::runtime_error
 struct Options
 {
   std::string input = CGAL_CAS3_DEFAULT_INPUT;
-  std::vector<CAS3::Scale> scales = {CAS3::Scale::quantile(0.10), CAS3::Scale::quantile(0.25),
-                                     CAS3::Scale::quantile(0.35), CAS3::Scale::quantile(0.50)};
-  std::vector<int> rings = {1, 2};
+  std::vector<CAS3::Scale> scales = CAS3::default_scales();
+  std::vector<CAS3::Neighborhood> neighborhoods = CAS3::default_neighborhoods();
+  bool neighborhoods_given = false;
   CAS3::Curvature_estimator estimator = CAS3::QUADRIC_FIT;
   CAS3::Denoising denoising = CAS3::AUTOMATIC_DENOISING;
   unsigned int denoising_neighbors = 0;  // 0: as the library's plan says
   CAS3::Surface_extraction extraction = CAS3::ADVANCING_FRONT;
   std::string output = "conformal_curvature_out";
+  bool csv = false;
   bool quiet = false;
   bool help = false;
 };
@@ -117,6 +131,8 @@ Options parse(int argc, char* argv[])
       o.help = true;
     else if(arg == "--quiet")
       o.quiet = true;
+    else if(arg == "--csv")
+      o.csv = true;
     else if(arg == "--alpha")
     {
       o.scales.clear();
@@ -128,16 +144,24 @@ Options parse(int argc, char* argv[])
           throw Failure("--alpha: a scale must be above 0 (a value > 0 or a quantile in (0%, 100%]): '" + item + "'");
       }
     }
-    else if(arg == "--rings")
+    else if(arg == "--rings" || arg == "--radius")
     {
-      o.rings.clear();
+      if(!o.neighborhoods_given)
+        o.neighborhoods.clear();
+      o.neighborhoods_given = true;
       for(const std::string& item : split_list(value()))
       {
+        if(arg == "--radius")
+        {
+          try { o.neighborhoods.push_back(CAS3::Neighborhood::radius_from_string(item)); }
+          catch(const std::invalid_argument& e) { throw Failure(std::string("--radius: ") + e.what()); }
+          continue;
+        }
         int k = 0;
         const auto r = std::from_chars(item.data(), item.data() + item.size(), k);
         if(r.ec != std::errc() || r.ptr != item.data() + item.size() || k < 1 || k > 100)
           throw Failure("--rings: not a ring size from 1 to 100: '" + item + "'");
-        o.rings.push_back(k);
+        o.neighborhoods.push_back(CAS3::Neighborhood::rings(k));
       }
     }
     else if(arg == "--estimator")
@@ -191,36 +215,6 @@ Options parse(int argc, char* argv[])
   return o;
 }
 
-// Blue (concave) - white - red (convex) by mean curvature, grey where
-// undefined; saturated at the 95th percentile of |H|.
-void colour_by_mean_curvature(Analysis::Surface& surface)
-{
-  auto mean = surface.property_map<Analysis::Surface_vertex, double>("v:mean_curvature").first;
-  std::vector<double> magnitude;
-  for(auto v : surface.vertices())
-    if(std::isfinite(mean[v]))
-      magnitude.push_back(std::abs(mean[v]));
-  double saturation = 1;
-  if(!magnitude.empty())
-  {
-    std::nth_element(magnitude.begin(), magnitude.begin() + std::ptrdiff_t(magnitude.size() * 95 / 100),
-                     magnitude.end());
-    saturation = magnitude[magnitude.size() * 95 / 100];
-  }
-  auto colour = surface.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
-  for(auto v : surface.vertices())
-  {
-    if(!std::isfinite(mean[v]) || !(saturation > 0))
-    {
-      colour[v] = CGAL::IO::Color(128, 128, 128);
-      continue;
-    }
-    const double t = std::max(-1.0, std::min(1.0, mean[v] / saturation));
-    const unsigned char fade = static_cast<unsigned char>(255 * (1 - std::abs(t)) + 0.5);
-    colour[v] = t >= 0 ? CGAL::IO::Color(255, fade, fade) : CGAL::IO::Color(fade, fade, 255);
-  }
-}
-
 // Appends a number the shortest way that reads back exactly.
 void append(std::string& out, double x)
 {
@@ -229,21 +223,111 @@ void append(std::string& out, double x)
   out.append(buffer, r.ptr);
 }
 
-void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double alpha, int rings,
-                     const std::vector<CAS3::Point_curvature<K> >& curvatures, const std::vector<bool>& outlier)
+// The values of one layer (a scale and a neighbourhood) per input point, in
+// input units, as the point cloud file stores them.
+struct Layer
 {
+  static constexpr int number_of_values = 15;
+  static const char* const* value_names()
+  {
+    static const char* const names[number_of_values] = {"nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y",
+                                                         "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
+    return names;
+  }
+  std::string label;       // the property suffix: [scale_]neighbourhood
+  std::string description; // for the file header
+  std::vector<float> values;        // number_of_values per point
+  std::vector<std::uint8_t> source; // CAS3::Point_source per point
+
+  void set(std::size_t i, const CAS3::Point_curvature<K>& c)
+  {
+    const auto& p = c.principal;
+    const double v[number_of_values] = {c.normal.x(), c.normal.y(), c.normal.z(), c.mean_curvature,
+                                        c.gaussian_curvature, p.max_curvature, p.min_curvature,
+                                        p.max_direction.x(), p.max_direction.y(), p.max_direction.z(),
+                                        p.min_direction.x(), p.min_direction.y(), p.min_direction.z(),
+                                        c.radius, c.distance};
+    for(int j = 0; j < number_of_values; ++j)
+      values[i * number_of_values + std::size_t(j)] = float(v[j]);
+    source[i] = std::uint8_t(c.source);
+  }
+};
+
+template <class T>
+void put_little_endian(std::string& out, T x)
+{
+  static_assert(std::is_arithmetic<T>::value, "a number");
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &x, sizeof(T));
+  // this program's platforms are little-endian; the header says so
+  out.append(bytes, sizeof(T));
+}
+
+// The point cloud: binary little-endian PLY, double positions, float
+// values, uchar flags; a comment line per layer says what it is.
+void write_point_cloud(std::ostream& out, const std::vector<Point>& points, const std::vector<bool>& outlier,
+                       const std::vector<Layer>& layers)
+{
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\n"
+         << "comment conformal_curvature: values per input point, in input units\n"
+         << "comment source_L: 0 own surface vertex, 1 nearest surface point, 2 no value\n";
+  for(const Layer& layer : layers)
+    header << "comment layer " << layer.label << ": " << layer.description << "\n";
+  header << "element vertex " << points.size() << "\n"
+         << "property double x\nproperty double y\nproperty double z\nproperty uchar outlier\n";
+  for(const Layer& layer : layers)
+  {
+    for(int j = 0; j < Layer::number_of_values; ++j)
+      header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
+    header << "property uchar source_" << layer.label << "\n";
+  }
+  header << "end_header\n";
+  out << header.str();
+  std::string block;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    put_little_endian(block, points[i].x());
+    put_little_endian(block, points[i].y());
+    put_little_endian(block, points[i].z());
+    put_little_endian(block, std::uint8_t(outlier[i] ? 1 : 0));
+    for(const Layer& layer : layers)
+    {
+      for(int j = 0; j < Layer::number_of_values; ++j)
+        put_little_endian(block, layer.values[i * Layer::number_of_values + std::size_t(j)]);
+      put_little_endian(block, layer.source[i]);
+    }
+    if(block.size() > (1u << 20) || i + 1 == points.size())
+    {
+      out.write(block.data(), std::streamsize(block.size()));
+      block.clear();
+    }
+  }
+}
+
+
+const char* const csv_header =
+  "point_index,x,y,z,a,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,outlier,"
+  "neighborhood,radius,source,distance\n";
+
+void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double a,
+                     const CAS3::Neighborhood& neighborhood, const std::vector<CAS3::Point_curvature<K> >& curvatures,
+                     const std::vector<bool>& outlier)
+{
+  const std::string rings =
+    neighborhood.kind() == CAS3::Neighborhood::RINGS ? std::to_string(int(neighborhood.value())) : "0";
   std::string line;
   for(std::size_t i = 0; i < points.size(); ++i)
   {
     const CAS3::Point_curvature<K>& c = curvatures[i];
     line.clear();
     line += std::to_string(i);
-    for(double x : {points[i].x(), points[i].y(), points[i].z(), alpha})
+    for(double x : {points[i].x(), points[i].y(), points[i].z(), a})
     {
       line += ',';
       append(line, x);
     }
-    line += ',' + std::to_string(rings) + (c.on_surface ? ",1" : ",0");
+    line += ',' + rings + (c.on_surface() ? ",1" : ",0");
     for(double x : {c.normal.x(), c.normal.y(), c.normal.z(), c.mean_curvature, c.gaussian_curvature,
                     c.principal.max_curvature, c.principal.min_curvature, c.principal.max_direction.x(),
                     c.principal.max_direction.y(), c.principal.max_direction.z(), c.principal.min_direction.x(),
@@ -252,22 +336,27 @@ void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double
       line += ',';
       append(line, x);
     }
-    line += outlier[i] ? ",1\n" : ",0\n";
+    line += outlier[i] ? ",1," : ",0,";
+    line += neighborhood.label() + ',';
+    append(line, c.radius);
+    line += ',' + std::to_string(int(c.source)) + ',';
+    append(line, c.distance);
+    line += '\n';
     csv << line;
   }
 }
 
 // Curvatures of the kept (normalised) points, back per input point in input
-// units; outliers are off every surface.
+// units; outliers have no value.
 std::vector<CAS3::Point_curvature<K> > to_input_units(const std::vector<CAS3::Point_curvature<K> >& kept,
                                                       const CAS3::internal::Normalized_input<K>& input,
                                                       std::size_t number_of_points)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  CAS3::Point_curvature<K> off;
-  off.normal = K::Vector_3(nan, nan, nan);
-  off.principal = CAS3::Principal_curvatures_and_directions<K>{nan, nan, off.normal, off.normal};
-  std::vector<CAS3::Point_curvature<K> > result(number_of_points, off);
+  CAS3::Point_curvature<K> none;
+  none.normal = K::Vector_3(nan, nan, nan);
+  none.principal = CAS3::Principal_curvatures_and_directions<K>{nan, nan, none.normal, none.normal};
+  std::vector<CAS3::Point_curvature<K> > result(number_of_points, none);
   for(std::size_t i = 0; i < kept.size(); ++i)
   {
     CAS3::Point_curvature<K> c = kept[i];
@@ -275,36 +364,41 @@ std::vector<CAS3::Point_curvature<K> > to_input_units(const std::vector<CAS3::Po
     c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
     c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
     c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
+    c.radius = input.length_to_input(c.radius);
+    c.distance = input.length_to_input(c.distance);
     result[input.input_index[i]] = c;
   }
   return result;
 }
 
-// A copy of the surface with its vertices at their input points, curvatures
-// in input units, and "v:input_index" the index in the input file.
+// A copy of the surface's faces with its vertices at their input points and
+// "v:input_index" the index in the input file; layers add their values.
 Analysis::Surface surface_in_input_units(const Analysis::Surface& normalized,
                                          const CAS3::internal::Normalized_input<K>& input,
                                          const std::vector<Point>& points)
 {
   Analysis::Surface surface = normalized;
   auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
-  auto scale = [&](const char* name, bool gaussian) {
-    auto map = surface.property_map<Analysis::Surface_vertex, double>(name);
-    if(!map.second)
-      return;
-    for(auto v : surface.vertices())
-      map.first[v] = gaussian ? input.gaussian_curvature_to_input(map.first[v]) : input.curvature_to_input(map.first[v]);
-  };
-  scale("v:mean_curvature", false);
-  scale("v:gaussian_curvature", true);
-  scale("v:k1", false);
-  scale("v:k2", false);
   for(auto v : surface.vertices())
   {
     index[v] = input.input_index[index[v]];
     surface.point(v) = points[index[v]];
   }
   return surface;
+}
+
+// Adds the values of a layer, from the curvatures per input point, as float
+// vertex properties "v:<value>_<label>" of the written surface.
+void add_layer_to_surface(Analysis::Surface& surface, const Layer& layer)
+{
+  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
+  for(int j = 0; j < Layer::number_of_values; ++j)
+  {
+    auto map = surface.add_property_map<Analysis::Surface_vertex, float>(
+                        std::string("v:") + Layer::value_names()[j] + "_" + layer.label).first;
+    for(auto v : surface.vertices())
+      map[v] = layer.values[index[v] * Layer::number_of_values + std::size_t(j)];
+  }
 }
 
 std::string quantiles(std::vector<double> values)
@@ -463,6 +557,7 @@ std::string file_label(const CAS3::Scale& s)
   std::string label = s.label();
   if(!label.empty() && label.back() == '%')
     label = label.substr(0, label.size() - 1) + "pct";
+  std::replace(label.begin(), label.end(), '.', 'p');  // usable in a property name
   return label;
 }
 
@@ -501,8 +596,12 @@ int run(const Options& o)
     progress(std::to_string(input.outliers.size()) + " isolated far outliers left out");
   progress("built the conformal alpha shape");
 
-  std::ofstream csv = output.open("curvatures.csv", false);
-  csv << "point_index,x,y,z,alpha_hat,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,outlier\n";
+  std::ofstream csv;
+  if(o.csv)
+  {
+    csv = output.open("curvatures.csv", false);
+    csv << csv_header;
+  }
   std::ostringstream summary;
   char noise[200];
   const CAS3::Denoising_plan& smoothing = analysis->denoising();
@@ -521,54 +620,92 @@ int run(const Options& o)
           << (analysis->has_reference_normals() ? "the majority of the input normals, per sheet"
                                                 : "closed sheets outward, open sheets away from the centre")
           << "\n"
-          << "scale      alpha_hat   rings  on surface     faces    H:  5%          50%          95%"
-             "      K:  5%          50%          95%\n";
+          << "layer               a  own vertex  nearest  no value  radius(median)"
+             "    H:  5%          50%          95%      K:  5%          50%          95%\n";
+  std::vector<Layer> layers;
   for(const CAS3::Scale& scale : o.scales)
   {
-    const double alpha = analysis->alpha(scale);
+    const double a = analysis->alpha(scale);
     Analysis::Surface surface;
-    const CAS3::Surface_report report = analysis->extract_surface(alpha, surface);
+    const CAS3::Surface_report report = analysis->extract_surface(a, surface);
     progress("scale " + scale.label() + ": surface of " + std::to_string(report.number_of_faces) + " faces");
     summary << "scale " << scale.label() << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
             << " closed, " << report.number_of_open_parts() << " open), "
             << report.number_of_points_off_surface << " points off the surface\n";
-    for(int k : o.rings)
+    Analysis::Surface written = surface_in_input_units(surface, input, points);
+    for(const CAS3::Neighborhood& neighborhood : o.neighborhoods)
     {
-      const auto kept = analysis->estimate_curvatures(surface, k, o.estimator);
-      const std::vector<CAS3::Point_curvature<K> > curvatures = to_input_units(kept, input, points.size());
-      Analysis::Surface written = surface_in_input_units(surface, input, points);
-      colour_by_mean_curvature(written);
-      std::ofstream ply = output.open("surface_" + file_label(scale) + "_rings" + std::to_string(k) + ".ply", true);
-      CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
-      if(!CGAL::IO::write_PLY(ply, written) || !ply)
-        throw Failure("cannot write into the output directory " + o.output);
-      ply.close();
-      // test hook: a crash (an abort, as a failed assertion) after the first
-      // file, to check the clean-up
-      if(std::getenv("CONFORMAL_CURVATURE_TEST_CRASH") != nullptr)
-        std::raise(SIGABRT);
-      append_csv_rows(csv, points, alpha, k, curvatures, input.is_outlier);
-      if(!csv)
-        throw Failure("cannot write into the output directory " + o.output);
-
-      std::vector<double> H, Kg;
-      std::size_t on = 0;
-      for(const auto& c : curvatures)
+      const std::vector<CAS3::Point_curvature<K> > curvatures =
+        to_input_units(analysis->estimate_curvatures(surface, neighborhood, o.estimator), input, points.size());
+      Layer layer;
+      layer.label = (o.scales.size() > 1 ? file_label(scale) + "_" : std::string()) + neighborhood.label();
+      std::ostringstream description;
+      description << "a = " << a << " (" << scale.label() << "), ";
+      if(neighborhood.kind() == CAS3::Neighborhood::RINGS)
+        description << int(neighborhood.value()) << "-ring";
+      else if(neighborhood.kind() == CAS3::Neighborhood::AUTOMATIC)
+        description << "radius chosen per point (radius_" << layer.label << ")";
+      else
+        description << "radius " << input.length_to_input(analysis->radius(neighborhood));
+      layer.description = description.str();
+      layer.values.resize(points.size() * Layer::number_of_values);
+      layer.source.resize(points.size());
+      std::size_t count[3] = {0, 0, 0};
+      std::vector<double> H, Kg, radius;
+      for(std::size_t i = 0; i < points.size(); ++i)
       {
-        on += c.on_surface ? 1 : 0;
+        const CAS3::Point_curvature<K>& c = curvatures[i];
+        layer.set(i, c);
+        ++count[c.source];
         H.push_back(c.mean_curvature);
         Kg.push_back(c.gaussian_curvature);
+        if(std::isfinite(c.radius))
+          radius.push_back(c.radius);
       }
-      char row[96];
-      std::snprintf(row, sizeof row, "%-8s %12.5g %5d %8zu %5.1f%% %9zu", scale.label().c_str(), alpha, k, on,
-                    100.0 * double(on) / double(points.size()), report.number_of_faces);
+      add_layer_to_surface(written, layer);
+      if(o.csv)
+      {
+        append_csv_rows(csv, points, a, neighborhood, curvatures, input.is_outlier);
+        if(!csv)
+          throw Failure("cannot write into the output directory " + o.output);
+      }
+      std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
+      char row[160];
+      const double n = double(points.size());
+      std::snprintf(row, sizeof row, "%-12s %10.4g %10.1f%% %7.1f%% %8.1f%% %14.4g", layer.label.c_str(), a,
+                    100.0 * double(count[CAS3::SURFACE_VERTEX]) / n,
+                    100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / n, 100.0 * double(count[CAS3::NO_VALUE]) / n,
+                    radius.empty() ? std::nan("") : radius[radius.size() / 2]);
       summary << row << "  " << quantiles(H) << "  " << quantiles(Kg) << "\n";
-      progress("scale " + scale.label() + ", rings " + std::to_string(k) + ": curvature written");
+      progress("layer " + layer.label + ": curvature estimated");
+      layers.push_back(std::move(layer));
     }
+    // colours: the ramp of the first layer's mean curvature
+    auto colour = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
+    cas3::colour_by_curvature(written,
+      written.property_map<Analysis::Surface_vertex, float>("v:H_" + layers[layers.size() - o.neighborhoods.size()].label).first,
+      colour);
+    std::ofstream ply = output.open("surface_" + file_label(scale) + ".ply", true);
+    CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
+    if(!CGAL::IO::write_PLY(ply, written) || !ply)
+      throw Failure("cannot write into the output directory " + o.output);
+    ply.close();
+    // test hook: a crash (an abort, as a failed assertion) after the first
+    // file, to check the clean-up
+    if(std::getenv("CONFORMAL_CURVATURE_TEST_CRASH") != nullptr)
+      std::raise(SIGABRT);
   }
-  csv.close();
-  if(!csv)
+  std::ofstream cloud_ply = output.open("curvatures.ply", true);
+  write_point_cloud(cloud_ply, points, input.is_outlier, layers);
+  cloud_ply.close();
+  if(!cloud_ply)
     throw Failure("cannot write into the output directory " + o.output);
+  if(o.csv)
+  {
+    csv.close();
+    if(!csv)
+      throw Failure("cannot write into the output directory " + o.output);
+  }
   output.commit();
   if(!o.quiet)
     std::cout << summary.str() << "results in " << o.output << "\n";

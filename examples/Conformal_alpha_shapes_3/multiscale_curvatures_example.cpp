@@ -1,5 +1,5 @@
-// Multi-scale curvature of a point cloud: for each scale and ring size, the
-// share of the points on the surface and the median mean curvature there.
+// Multi-scale curvature of a point cloud: for each scale and neighbourhood,
+// where the points' values come from and the median mean curvature.
 //   multiscale_curvatures_example [points.xyz]   (default: the bundled bunny)
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
@@ -7,6 +7,7 @@
 #include <CGAL/IO/read_points.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -24,21 +25,29 @@ int main(int argc, char* argv[])
     std::cerr << "cannot read points from " << filename << "\n";
     return EXIT_FAILURE;
   }
-  const std::vector<CAS3::Curvature_layer<K> > layers = CAS3::multiscale_curvatures(
-    points, CAS3::parameters::scales(std::vector<CAS3::Scale>{CAS3::Scale::quantile(0.25), CAS3::Scale::automatic(),
-                                                              CAS3::Scale::quantile(0.50)},
-            CAS3::parameters::ring_sizes(std::vector<int>{1, 2, 3})));
+  // the automatic scale and the default neighbourhoods (automatic, then 2 to
+  // 16 sample spacings), and the paper's 25% quantile with 2-rings
+  std::vector<CAS3::Curvature_layer<K> > layers = CAS3::multiscale_curvatures(points);
+  const std::vector<CAS3::Curvature_layer<K> > paper = CAS3::multiscale_curvatures(
+    points, CAS3::parameters::scales(std::vector<CAS3::Scale>{CAS3::Scale::quantile(0.25)},
+            CAS3::parameters::neighborhoods(std::vector<CAS3::Neighborhood>{CAS3::Neighborhood::rings(2)})));
+  layers.insert(layers.end(), paper.begin(), paper.end());
 
-  std::printf("scale   alpha_hat  rings  on surface  median H\n");
+  std::printf("scale  neighbourhood  a           own vertex  nearest facet  no value  median H\n");
   for(const CAS3::Curvature_layer<K>& layer : layers)
   {
     std::vector<double> H;
+    std::size_t count[3] = {0, 0, 0};
     for(const CAS3::Point_curvature<K>& p : layer.points)
-      if(p.on_surface && p.mean_curvature == p.mean_curvature)
+    {
+      ++count[p.source];
+      if(std::isfinite(p.mean_curvature))
         H.push_back(p.mean_curvature);
+    }
     std::nth_element(H.begin(), H.begin() + std::ptrdiff_t(H.size() / 2), H.end());
-    std::printf("%-6s %10.4g %6d %10.1f%% %9.4g\n", layer.scale.label().c_str(), layer.alpha, layer.ring_size,
-                100 * layer.surface.fraction_of_points_on_surface(), H.empty() ? 0.0 : H[H.size() / 2]);
+    std::printf("%-6s %-14s %-11.4g %10zu %14zu %9zu %9.4g\n", layer.scale.label().c_str(),
+                layer.neighborhood.label().c_str(), layer.alpha, count[CAS3::SURFACE_VERTEX],
+                count[CAS3::NEAREST_SURFACE_POINT], count[CAS3::NO_VALUE], H.empty() ? 0.0 : H[H.size() / 2]);
   }
   return EXIT_SUCCESS;
 }

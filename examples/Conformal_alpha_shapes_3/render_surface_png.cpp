@@ -1,13 +1,17 @@
 // Renders a PLY surface written by conformal_curvature (its per-vertex
-// colour ramp of the mean curvature) into a PNG image, headless: a small
-// software rasteriser with a z-buffer, Lambert shading and 3x3 supersampling.
+// colours, or the colour ramp of a per-vertex property such as H_r4s) into a
+// PNG image, headless: a small software rasteriser with a z-buffer, Lambert
+// shading and 3x3 supersampling.
 //   render_surface_png SURFACE.ply IMAGE.png [--size N] [--view X,Y,Z] [--up X,Y,Z]
+//                      [--color-by PROPERTY]
 // The PNG is compressed with zlib, which libcgal-dev already depends on:
 // rendering adds no package (see the manual).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include "cas3_curvature_colors.h"
 
 #include <zlib.h>
 
@@ -192,25 +196,41 @@ int main(int argc, char* argv[])
 {
   if(argc < 3)
   {
-    std::cerr << "usage: render_surface_png SURFACE.ply IMAGE.png [--size N] [--view X,Y,Z] [--up X,Y,Z]\n";
+    std::cerr << "usage: render_surface_png SURFACE.ply IMAGE.png [--size N] [--view X,Y,Z] [--up X,Y,Z]"
+                 " [--color-by PROPERTY]\n";
     return EXIT_FAILURE;
   }
   try
   {
     int size = 480;
     Vector view(0, 0, 1), up(0, 1, 0);  // the Stanford bunny's front
+    std::string colour_by;
     for(int i = 3; i + 1 < argc; i += 2)
     {
       const std::string option = argv[i];
       if(option == "--size") size = std::stoi(argv[i + 1]);
       else if(option == "--view") view = parse_vector(argv[i + 1]);
       else if(option == "--up") up = parse_vector(argv[i + 1]);
+      else if(option == "--color-by") colour_by = argv[i + 1];
       else throw std::invalid_argument("unknown option " + option);
     }
     Mesh mesh;
     std::ifstream in(argv[1], std::ios::binary);
     if(!in || !CGAL::IO::read_PLY(in, mesh) || mesh.number_of_faces() == 0)
       throw std::invalid_argument(std::string("cannot read a surface from ") + argv[1]);
+    if(!colour_by.empty())
+    {
+      // PLY floats and doubles read back as float or double properties
+      auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+      auto as_float = mesh.property_map<Mesh::Vertex_index, float>("v:" + colour_by);
+      auto as_double = mesh.property_map<Mesh::Vertex_index, double>("v:" + colour_by);
+      if(as_float.second)
+        cas3::colour_by_curvature(mesh, as_float.first, colour);
+      else if(as_double.second)
+        cas3::colour_by_curvature(mesh, as_double.first, colour);
+      else
+        throw std::invalid_argument(std::string(argv[1]) + " has no vertex property " + colour_by);
+    }
     if(!write_png(argv[2], render(mesh, size, view, up)))
       throw std::invalid_argument(std::string("cannot write ") + argv[2]);
   }

@@ -95,10 +95,10 @@ Answer pipeline_on_normalized(const Normalized& n, std::size_t input_size)
   Answer a{std::vector<bool>(input_size, false), std::vector<double>(input_size, qnan)};
   CAS3::Multiscale_curvatures<K>::Surface surface;
   analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
-  const auto c = analysis.estimate_curvatures(surface, 2);
+  const auto c = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
   for(std::size_t i = 0; i < c.size(); ++i)
   {
-    a.on[n.input_index[i]] = c[i].on_surface;
+    a.on[n.input_index[i]] = c[i].on_surface();
     a.H[n.input_index[i]] = n.curvature_to_input(c[i].mean_curvature);
   }
   return a;

@@ -341,10 +341,10 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
   facts.report = analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
   BOOST_TEST(CGAL::is_valid_polygon_mesh(surface));
   BOOST_TEST(facts.report.number_of_faces == surface.number_of_faces());
-  const auto curvatures = analysis.estimate_curvatures(surface, 1);
+  const auto curvatures = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(1));
   std::size_t covered = 0, agree = 0;
   for(std::size_t i = 0; i < points.size(); ++i)
-    if(curvatures[i].on_surface)
+    if(curvatures[i].on_surface())
     {
       ++covered;
       agree += curvatures[i].normal * truth[i] > 0 ? 1 : 0;

@@ -16,7 +16,11 @@
 #include <cstddef>
 #include <limits>
 #include <type_traits>
+#include <queue>
+#include <stdexcept>
+#include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -74,7 +78,7 @@ Vec3 to_vec3(const Point& p)
   return Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
-// Chen-Wu vertex normal (METHOD 5): unit face normals weighted by the inverse
+// Chen-Wu vertex normal (the manual, section "Curvature"): unit face normals weighted by the inverse
 // distance from the vertex to the face centroid. Faces of zero area are
 // skipped; NaN when no face is left.
 template <typename PolygonMesh, typename VPM>
@@ -131,62 +135,163 @@ void collect_rings(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
   out.erase(out.begin());
 }
 
-// The estimate at one vertex; `normal_of(u)` gives a vertex's Chen-Wu normal.
-// A k-ring too small or too degenerate for the fit is widened by up to two
-// rings before the vertex is given up (NaN curvature).
+// The vertices connected to v inside the ball of radius `radius` around it
+// (v excluded), nearest first, with their distances: a search that always
+// expands the nearest vertex not yet expanded, so that every prefix of the
+// result within a smaller radius r is exactly the part connected to v inside
+// the ball of radius r. `mark(u)` returns true the first time it is called for u.
+template <typename PolygonMesh, typename VPM, typename Mark>
+void collect_ball(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                  const PolygonMesh& pmesh, const VPM& vpm, double radius, Mark mark,
+                  std::vector<std::pair<double, typename boost::graph_traits<PolygonMesh>::vertex_descriptor> >& out)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef std::pair<double, vertex_descriptor> Entry;
+  auto farther = [](const Entry& a, const Entry& b) { return a.first > b.first; };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(farther)> queue(farther);
+  const Vec3 p = to_vec3(get(vpm, v));
+  out.clear();
+  mark(v);
+  queue.push(Entry(0, v));
+  while(!queue.empty())
+  {
+    const Entry e = queue.top();
+    queue.pop();
+    if(e.second != v)
+      out.push_back(e);
+    if(halfedge(e.second, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge())
+      continue;
+    for(vertex_descriptor u : CGAL::vertices_around_target(e.second, pmesh))
+    {
+      const double d = (to_vec3(get(vpm, u)) - p).norm();
+      if(d <= radius && mark(u))
+        queue.push(Entry(d, u));
+    }
+  }
+}
+
+// Which neighbours a fit uses (see `estimate_vertex_curvatures()`): a ring
+// size, a radius, or candidate radii to choose from per vertex.
+struct Neighborhood_rule
+{
+  int rings = 1;
+  double radius = 0;               // used when > 0
+  std::vector<double> candidates;  // increasing; used when not empty
+};
+
+// How far the confidence intervals of the mean curvature may be apart, in
+// standard errors, before a larger neighbourhood is taken to be biased.
+constexpr double mean_curvature_interval_width = 2;
+
 // Buffers reused from vertex to vertex.
 template <typename PolygonMesh>
 struct Ring_buffers
 {
   std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> ring;
+  std::vector<std::pair<double, typename boost::graph_traits<PolygonMesh>::vertex_descriptor> > ball;
   std::vector<Neighbour> neighbours;
 };
 
+// The estimate at one vertex, and the radius of the neighbourhood it used;
+// `normal_of(u)` gives a vertex's Chen-Wu normal.
+// A neighbourhood too small or too degenerate for the fit is widened (two
+// more rings, or the radius by 1.5 twice) before the vertex is given up
+// (NaN curvature). With candidate radii, the fits run from the smallest
+// radius up, and the largest radius is kept whose confidence interval of the
+// mean curvature still meets those of all smaller ones (the intersection of
+// confidence intervals rule): beyond it the fit's bias outgrows its noise.
 template <typename PolygonMesh, typename VPM, typename Normal_of, typename Mark_factory>
 bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                        const PolygonMesh& pmesh, const VPM& vpm, int rings,
+                        const PolygonMesh& pmesh, const VPM& vpm, const Neighborhood_rule& rule,
                         Curvature_estimator estimator, Normal_of normal_of,
-                        Mark_factory new_mark, Ring_buffers<PolygonMesh>& buffers, Local_curvature& out)
+                        Mark_factory new_mark, Ring_buffers<PolygonMesh>& buffers,
+                        Local_curvature& out, double& radius)
 {
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   out = Local_curvature{normal_of(v), nan, nan, nan_vector(), nan_vector()};
+  radius = nan;
   if(!std::isfinite(out.normal.x()))
     return false;
 
   const Vec3 p = to_vec3(get(vpm, v));
-  std::vector<vertex_descriptor>& ring = buffers.ring;
   std::vector<Neighbour>& nbrs = buffers.neighbours;
-  for(int k = rings; k <= rings + 2; ++k)
-  {
-    collect_rings(v, pmesh, k, new_mark(), ring);
-    nbrs.clear();
-    for(vertex_descriptor u : ring)
+  auto add = [&](vertex_descriptor u) {
+    const Vec3 offset = to_vec3(get(vpm, u)) - p;
+    if(!(offset.squaredNorm() > 0))
+      return;  // a coincident vertex carries no direction
+    double kn = 0;
+    if(estimator != QUADRIC_FIT)
     {
-      const Vec3 offset = to_vec3(get(vpm, u)) - p;
-      if(!(offset.squaredNorm() > 0))
-        continue;  // a coincident vertex carries no direction
-      double kn = 0;
-      if(estimator != QUADRIC_FIT)
-      {
-        const Vec3 n_u = normal_of(u);
-        if(!std::isfinite(n_u.x()))
-          continue;
-        kn = normal_curvature(offset, out.normal, n_u);
-      }
-      nbrs.push_back(Neighbour{offset, kn});
+      const Vec3 n_u = normal_of(u);
+      if(!std::isfinite(n_u.x()))
+        return;
+      kn = normal_curvature(offset, out.normal, n_u);
     }
-    Local_curvature fit;
+    nbrs.push_back(Neighbour{offset, kn});
+  };
+  auto fit = [&](Local_curvature& result, double* error) {
     bool ok = false;
     switch(estimator)
     {
-      case PAPER_EULER_FIT:         ok = paper_euler_fit(out.normal, nbrs, fit); break;
-      case EULER_LEAST_SQUARES_FIT: ok = euler_least_squares_fit(out.normal, nbrs, fit); break;
-      case QUADRIC_FIT:             ok = quadric_fit(out.normal, nbrs, fit); break;
+      case PAPER_EULER_FIT:         ok = paper_euler_fit(out.normal, nbrs, result); break;
+      case EULER_LEAST_SQUARES_FIT: ok = euler_least_squares_fit(out.normal, nbrs, result); break;
+      case QUADRIC_FIT:             ok = quadric_fit(out.normal, nbrs, result, error); break;
     }
-    if(ok && std::isfinite(fit.k1) && std::isfinite(fit.k2))
+    return ok && std::isfinite(result.k1) && std::isfinite(result.k2);
+  };
+  Local_curvature result;
+
+  if(!rule.candidates.empty())
+  {
+    collect_ball(v, pmesh, vpm, rule.candidates.back(), new_mark(), buffers.ball);
+    nbrs.clear();
+    double low = -std::numeric_limits<double>::infinity(), high = -low;
+    std::size_t used = 0;
+    bool any = false;
+    for(double r : rule.candidates)
     {
-      out = fit;
+      for(; used < buffers.ball.size() && buffers.ball[used].first <= r; ++used)
+        add(buffers.ball[used].second);
+      double error = 0;
+      if(!fit(result, &error))
+        continue;
+      const double H = (result.k1 + result.k2) / 2;
+      low = (std::max)(low, H - mean_curvature_interval_width * error);
+      high = (std::min)(high, H + mean_curvature_interval_width * error);
+      if(any && !(low <= high))
+        break;
+      out = result;
+      radius = r;
+      any = true;
+    }
+    return any;
+  }
+
+  for(int widening = 0; widening <= 2; ++widening)
+  {
+    nbrs.clear();
+    double reach = 0;
+    if(rule.radius > 0)
+    {
+      reach = rule.radius * std::pow(1.5, widening);
+      collect_ball(v, pmesh, vpm, reach, new_mark(), buffers.ball);
+      for(const auto& entry : buffers.ball)
+        add(entry.second);
+    }
+    else
+    {
+      collect_rings(v, pmesh, rule.rings + widening, new_mark(), buffers.ring);
+      for(vertex_descriptor u : buffers.ring)
+      {
+        add(u);
+        reach = (std::max)(reach, (to_vec3(get(vpm, u)) - p).norm());
+      }
+    }
+    if(fit(result, nullptr))
+    {
+      out = result;
+      radius = reach;
       return true;
     }
   }
@@ -197,7 +302,8 @@ template <typename PolygonMesh, typename NamedParameters>
 struct Curvature_maps
 {
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type GT;
+  typedef typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::const_type VPM;
+  typedef typename Kernel_traits<typename boost::property_traits<VPM>::value_type>::Kernel GT;
   typedef typename GT::FT FT;
   typedef typename GT::Vector_3 Vector_3;
   typedef Principal_curvatures_and_directions<GT> Principal;
@@ -214,6 +320,8 @@ struct Curvature_maps
   typedef typename CGAL::internal_np::Lookup_named_param_def<
     internal_np_cas3::vertex_principal_curvatures_and_directions_map_t, NamedParameters,
     Default_principal_map>::type Principal_map;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    internal_np_cas3::vertex_neighborhood_radius_map_t, NamedParameters, Default_scalar_map>::type Radius_map;
 
   Curvature_maps(const NamedParameters& np)
     : normal(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_normal_map),
@@ -224,13 +332,16 @@ struct Curvature_maps
         CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_Gaussian_curvature_map), Default_scalar_map())),
       principal(CGAL::parameters::choose_parameter(
         CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_principal_curvatures_and_directions_map),
-        Default_principal_map()))
+        Default_principal_map())),
+      radius(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_neighborhood_radius_map), Default_scalar_map()))
   {}
 
   static Vector_3 to_vector(const Vec3& v) { return Vector_3(FT(v.x()), FT(v.y()), FT(v.z())); }
 
-  void write(vertex_descriptor v, const Local_curvature& c) const
+  void write(vertex_descriptor v, const Local_curvature& c, double used_radius) const
   {
+    put(radius, v, FT(used_radius));
     put(normal, v, to_vector(c.normal));
     put(mean, v, FT((c.k1 + c.k2) / 2));
     put(gaussian, v, FT(c.k1 * c.k2));
@@ -241,6 +352,7 @@ struct Curvature_maps
   H_map mean;
   K_map gaussian;
   Principal_map principal;
+  Radius_map radius;
 };
 
 template <typename PolygonMesh, typename NamedParameters>
@@ -250,11 +362,26 @@ Curvature_estimator get_estimator(const NamedParameters& np)
 }
 
 template <typename NamedParameters>
-int get_ring_size(const NamedParameters& np)
+Neighborhood_rule get_neighborhood_rule(const NamedParameters& np, Curvature_estimator estimator)
 {
-  const int rings = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::ring_size), 1);
-  CGAL_precondition(rings >= 1);
-  return rings < 1 ? 1 : rings;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Neighborhood_rule rule;
+  rule.rings = choose_parameter(get_parameter(np, internal_np_cas3::ring_size), 1);
+  rule.radius = choose_parameter(get_parameter(np, internal_np_cas3::neighborhood_radius), 0.);
+  rule.candidates = choose_parameter(get_parameter(np, internal_np_cas3::neighborhood_radii), std::vector<double>());
+  const std::string where = "estimate_vertex_curvatures: ";
+  if(rule.rings < 1)
+    throw std::invalid_argument(where + "ring size " + std::to_string(rule.rings) + " is below 1");
+  if(!(rule.radius >= 0) || !std::isfinite(rule.radius))
+    throw std::invalid_argument(where + "the neighborhood radius must be finite and positive");
+  for(std::size_t i = 0; i < rule.candidates.size(); ++i)
+    if(!(rule.candidates[i] > 0) || !std::isfinite(rule.candidates[i])
+       || (i > 0 && !(rule.candidates[i] > rule.candidates[i - 1])))
+      throw std::invalid_argument(where + "the candidate radii must be finite, positive and increasing");
+  if(!rule.candidates.empty() && estimator != QUADRIC_FIT)
+    throw std::invalid_argument(where + "choosing among candidate radii needs the QUADRIC_FIT estimator");
+  return rule;
 }
 
 } // namespace internal
@@ -271,9 +398,24 @@ Conventions: with outward-oriented faces, convex regions have positive
 curvature (a sphere of radius `r`: `H = 1/r`, `K = 1/r^2`); the curvatures
 are `max_curvature >= min_curvature`, `H` their mean and `K` their product.
 
-Neighbourhood: the `k`-ring of the vertex (`ring_size`). When it is too small
-or too degenerate for the fit (fewer neighbours than unknowns, all neighbours
-along one line, a singular system), up to two more rings are used. Border
+Neighbourhood, by the first of these named parameters given:
+- `neighborhood_radii`: per vertex, one of the candidate radii, chosen from
+  the data alone by the intersection of confidence intervals rule: the fits
+  run from the smallest radius up, each giving the mean curvature with a
+  standard error from its residuals; the largest radius is kept whose
+  interval (two standard errors either side) still meets the intervals of
+  all smaller radii. On clean fine detail this keeps small radii, under
+  noise it grows (see the manual's measurements). `QUADRIC_FIT` only.
+- `neighborhood_radius`: the vertices within that distance of the vertex
+  and connected to it through surface edges inside that ball (a ball cut to
+  the vertex's side of the surface: a thin part or a nearby sheet does not
+  leak into the fit). Widened by 1.5 up to twice when too small.
+- `ring_size`: the `k`-ring of the vertex; up to two more rings are used when
+  it is too small.
+
+A neighbourhood is too small or too degenerate for the fit with fewer
+neighbours than unknowns, all neighbours along one line, or a singular
+system. Border
 vertices are estimated from their one-sided neighbourhood. Faces of zero area
 do not contribute to the normals. A vertex whose normal or curvature is still
 undefined (an isolated vertex, only degenerate faces, too few vertices even
@@ -296,11 +438,6 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
     \cgalParamDefault{an automatically indexed internal map}
   \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{deduced from the point type}
-  \cgalParamNEnd
   \cgalParamNBegin{vertex_normal_map}
     \cgalParamDescription{output: unit normals (the Chen-Wu normal for the Euler estimators, the fitted surface's for `QUADRIC_FIT`)}
     \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `GT::Vector_3` as value}
@@ -321,8 +458,23 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `Principal_curvatures_and_directions<GT>` as value}
     \cgalParamDefault{not computed}
   \cgalParamNEnd
+  \cgalParamNBegin{vertex_neighborhood_radius_map}
+    \cgalParamDescription{output: the radius of the neighbourhood used (for rings: the distance of the farthest neighbour used; NaN where the curvature is undefined)}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `GT::FT` as value}
+    \cgalParamDefault{not computed}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighborhood_radii}
+    \cgalParamDescription{candidate radii, increasing, to choose from per vertex (see above)}
+    \cgalParamType{`std::vector<double>`}
+    \cgalParamDefault{empty: not used}
+  \cgalParamNEnd
+  \cgalParamNBegin{neighborhood_radius}
+    \cgalParamDescription{the neighbourhood's radius, in the units of the points (see above)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{0: not used}
+  \cgalParamNEnd
   \cgalParamNBegin{ring_size}
-    \cgalParamDescription{the scale: the size `k >= 1` of the ring of neighbours used at each vertex}
+    \cgalParamDescription{the size `k >= 1` of the ring of neighbours used at each vertex}
     \cgalParamType{`int`}
     \cgalParamDefault{1}
   \cgalParamNEnd
@@ -332,6 +484,12 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamDefault{`QUADRIC_FIT`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
+
+Here `GT` is the kernel of the points of the vertex point map.
+
+\throws std::invalid_argument for a ring size below 1, a radius that is
+negative or not finite, candidate radii that are not positive and increasing,
+or candidate radii with another estimator than `QUADRIC_FIT`.
 
 \returns the number of vertices whose curvature is undefined (NaN).
 */
@@ -348,7 +506,7 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, pmesh));
   const Curvature_estimator estimator = internal::get_estimator<PolygonMesh>(np);
-  const int rings = internal::get_ring_size(np);
+  const internal::Neighborhood_rule rule = internal::get_neighborhood_rule(np, estimator);
 
   const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
   std::vector<internal::Vec3> normals(num_vertices(pmesh));
@@ -372,14 +530,15 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
 
   std::size_t undefined = 0;
   internal::Local_curvature c;
+  double radius = 0;
   internal::Ring_buffers<PolygonMesh> buffers;
   for(vertex_descriptor v : vertices(pmesh))
   {
-    if(!internal::estimate_at_vertex(v, pmesh, vpm, rings, estimator,
+    if(!internal::estimate_at_vertex(v, pmesh, vpm, rule, estimator,
                                      [&](vertex_descriptor u) { return normals[get(vertex_index, u)]; }, new_mark,
-                                     buffers, c))
+                                     buffers, c, radius))
       ++undefined;
-    maps.write(v, c);
+    maps.write(v, c, radius);
   }
   return undefined;
 }
@@ -410,11 +569,12 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
     return [&marked](vertex_descriptor u) { return marked.insert(u).second; };
   };
   internal::Local_curvature c;
+  double radius = 0;
   internal::Ring_buffers<PolygonMesh> buffers;
-  const bool ok = internal::estimate_at_vertex(v, pmesh, vpm, internal::get_ring_size(np),
-                                               internal::get_estimator<PolygonMesh>(np), normal_of, new_mark,
-                                               buffers, c);
-  maps.write(v, c);
+  const Curvature_estimator estimator = internal::get_estimator<PolygonMesh>(np);
+  const bool ok = internal::estimate_at_vertex(v, pmesh, vpm, internal::get_neighborhood_rule(np, estimator),
+                                               estimator, normal_of, new_mark, buffers, c, radius);
+  maps.write(v, c, radius);
   return ok;
 }
 

@@ -12,13 +12,21 @@
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
@@ -86,20 +94,114 @@ private:
 
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
-The curvature of the surface at one input point, at one scale and ring size;
-`on_surface` is `false`, and every number NaN, where the point is not on
-that surface, or is on it where its curvature is undefined (see
-`estimate_vertex_curvatures()`: a vertex of a pocket too small for the fit).
+The neighbourhood of the curvature fit (see `estimate_vertex_curvatures()`):
+a ring size, a radius in model units, a radius in multiples of the
+measured sample spacing (`Noise_estimate::spacing`), or automatic: per
+point, one of the radii `automatic_radii()` times the spacing, chosen from
+the data alone.
+*/
+class Neighborhood
+{
+public:
+  enum Kind { RINGS, RADIUS, SPACINGS, AUTOMATIC };
+
+  static Neighborhood rings(int k) { return Neighborhood(RINGS, k); }
+  static Neighborhood radius(double r) { return Neighborhood(RADIUS, r); }
+  static Neighborhood spacings(double m) { return Neighborhood(SPACINGS, m); }
+  static Neighborhood automatic() { return Neighborhood(AUTOMATIC, 0); }
+
+  /// The candidates of the automatic choice, in spacings: 2 to 16 by
+  /// factors of the square root of 2.
+  static std::vector<double> automatic_radii() { return {2, 2.83, 4, 5.66, 8, 11.3, 16}; }
+
+  /// Parses a radius: `0.01` (model units), `4s` (spacings) or `auto`.
+  /// \throws std::invalid_argument on anything else and on a value that is
+  /// not finite and positive.
+  static Neighborhood radius_from_string(const std::string& text)
+  {
+    if(text == "auto")
+      return automatic();
+    const bool in_spacings = !text.empty() && text.back() == 's';
+    const std::string number = in_spacings ? text.substr(0, text.size() - 1) : text;
+    std::size_t used = 0;
+    double value = std::numeric_limits<double>::quiet_NaN();
+    try { value = std::stod(number, &used); }
+    catch(const std::exception&) { used = 0; }
+    if(number.empty() || used != number.size() || !std::isfinite(value) || !(value > 0))
+      throw std::invalid_argument("not a radius: '" + text + "' (expected a value > 0, a multiple of the "
+                                  "spacing as 4s, or 'auto')");
+    return in_spacings ? spacings(value) : radius(value);
+  }
+
+  Kind kind() const { return m_kind; }
+  /// the ring size, the radius or the number of spacings
+  double value() const { return m_value; }
+
+  /// `k2`, `r0.01`, `r4s` or `rauto`: usable in a name (`.` written `p`)
+  std::string label() const
+  {
+    switch(m_kind)
+    {
+      case RINGS: return "k" + std::to_string(int(m_value));
+      case AUTOMATIC: return "rauto";
+      default: break;
+    }
+    std::ostringstream text;
+    text << std::setprecision(6) << m_value;
+    std::string number = text.str();
+    std::replace(number.begin(), number.end(), '.', 'p');
+    std::replace(number.begin(), number.end(), '-', 'm');
+    std::replace(number.begin(), number.end(), '+', 'P');
+    return "r" + number + (m_kind == SPACINGS ? "s" : "");
+  }
+
+private:
+  Neighborhood(Kind kind, double value) : m_kind(kind), m_value(value) {}
+  Kind m_kind;
+  double m_value;
+};
+
+/*!
+\ingroup PkgConformalAlphaShapes3Multiscale
+Where the values of an input point at one scale come from.
+*/
+enum Point_source
+{
+  /// the fit at the point's own vertex of the surface
+  SURFACE_VERTEX,
+  /// the values of the surface at its point nearest to the input point,
+  /// interpolated over the facet there: the point is not a vertex of the
+  /// surface, or its own fit is undefined
+  NEAREST_SURFACE_POINT,
+  /// none: the point is farther from the surface than
+  /// `Multiscale_curvatures::far_from_surface()` local spacings, or the surface
+  /// near it has no defined values; every number is NaN
+  NO_VALUE
+};
+
+/*!
+\ingroup PkgConformalAlphaShapes3Multiscale
+The curvature of the surface at one input point, at one scale and
+neighbourhood; every number is NaN where `source` is `NO_VALUE`.
 */
 template <class Kernel>
 struct Point_curvature
 {
-  bool on_surface = false;
+  Point_source source = NO_VALUE;
+  /// from the (smoothed) point to the surface point whose values these are
+  /// (0 on its own vertex; NaN when the surface is empty)
+  double distance = std::numeric_limits<double>::quiet_NaN();
+  /// the radius of the neighbourhood of the fit (for rings: the farthest
+  /// neighbour used); interpolated like the values
+  double radius = std::numeric_limits<double>::quiet_NaN();
   typename Kernel::Vector_3 normal;
   typename Kernel::FT mean_curvature = std::numeric_limits<double>::quiet_NaN();
   typename Kernel::FT gaussian_curvature = std::numeric_limits<double>::quiet_NaN();
   /// `max_curvature` is `k1`, `max_direction` `d1`; `min_curvature` is `k2`
   Principal_curvatures_and_directions<Kernel> principal;
+
+  /// whether the values are the point's own vertex's
+  bool on_surface() const { return source == SURFACE_VERTEX; }
 };
 
 /*!
@@ -239,31 +341,62 @@ public:
     return report;
   }
 
-  /// Estimates the curvature of `surface` (from `extract_surface()`) at ring
-  /// size `ring_size` into its properties, and returns it per input point.
-  std::vector<Point_curvature<Kernel> > estimate_curvatures(Surface& surface, int ring_size,
+  /// The absolute radius of a neighbourhood given in spacings (other
+  /// kinds: their value).
+  double radius(const Neighborhood& neighborhood) const
+  {
+    return neighborhood.kind() == Neighborhood::SPACINGS ? neighborhood.value() * m_noise.spacing
+                                                         : neighborhood.value();
+  }
+
+  /// How far, in local spacings, an input point may be from the surface and
+  /// still take its values (see `Point_source`); the local spacing of a
+  /// point is the length of its vertex's third-shortest Delaunay edge.
+  static constexpr double far_from_surface() { return 4; }
+
+  /*!
+  Estimates the curvature of `surface` (from `extract_surface()`) with the
+  neighbourhood `neighborhood` into its properties, and returns it for every
+  input point: a vertex of the surface has its own fit; any other point
+  takes the values at its nearest point on the surface, interpolated over
+  the facet there, unless it is farther than `far_from_surface()` local
+  spacings (see `Point_source`).
+  */
+  std::vector<Point_curvature<Kernel> > estimate_curvatures(Surface& surface, const Neighborhood& neighborhood,
                                                             Curvature_estimator estimator = QUADRIC_FIT) const
   {
     auto normal = surface.template add_property_map<Surface_vertex, Vector>("v:normal").first;
     auto mean = surface.template add_property_map<Surface_vertex, double>("v:mean_curvature").first;
     auto gaussian = surface.template add_property_map<Surface_vertex, double>("v:gaussian_curvature").first;
+    auto used_radius = surface.template add_property_map<Surface_vertex, double>("v:radius").first;
     auto principal = get(CGAL::dynamic_vertex_property_t<Principal_curvatures_and_directions<Kernel> >(), surface);
-    estimate_vertex_curvatures(surface, parameters::vertex_mean_curvature_map(mean,
-                                        parameters::vertex_Gaussian_curvature_map(gaussian,
-                                        parameters::vertex_principal_curvatures_and_directions_map(principal,
-                                        parameters::ring_size(ring_size, parameters::estimator(estimator)))))
-                                          .vertex_normal_map(normal));
+    auto outputs = parameters::vertex_mean_curvature_map(mean,
+                   parameters::vertex_Gaussian_curvature_map(gaussian,
+                   parameters::vertex_principal_curvatures_and_directions_map(principal,
+                   parameters::vertex_neighborhood_radius_map(used_radius, parameters::estimator(estimator)))))
+                     .vertex_normal_map(normal);
+    switch(neighborhood.kind())
+    {
+      case Neighborhood::RINGS:
+        estimate_vertex_curvatures(surface, parameters::ring_size(int(neighborhood.value()), outputs));
+        break;
+      case Neighborhood::RADIUS:
+      case Neighborhood::SPACINGS:
+        estimate_vertex_curvatures(surface, parameters::neighborhood_radius(radius(neighborhood), outputs));
+        break;
+      case Neighborhood::AUTOMATIC:
+      {
+        std::vector<double> radii = Neighborhood::automatic_radii();
+        for(double& r : radii)
+          r *= m_noise.spacing;
+        estimate_vertex_curvatures(surface, parameters::neighborhood_radii(radii, outputs));
+        break;
+      }
+    }
     auto k1 = surface.template add_property_map<Surface_vertex, double>("v:k1").first;
     auto k2 = surface.template add_property_map<Surface_vertex, double>("v:k2").first;
     auto d1 = surface.template add_property_map<Surface_vertex, Vector>("v:d1").first;
     auto d2 = surface.template add_property_map<Surface_vertex, Vector>("v:d2").first;
-    auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
-
-    // by vertex of the shape: at a pinch, the first umbrella's defined estimate
-    const std::size_t none = std::size_t(-1);
-    std::vector<std::size_t> record_of_vertex(m_shape.number_of_vertices(), none);
-    std::vector<Point_curvature<Kernel> > records;
-    records.reserve(surface.number_of_vertices());
     for(Surface_vertex v : surface.vertices())
     {
       const Principal_curvatures_and_directions<Kernel> p = get(principal, v);
@@ -271,34 +404,118 @@ public:
       k2[v] = p.min_curvature;
       d1[v] = p.max_direction;
       d2[v] = p.min_direction;
-      std::size_t& r = record_of_vertex[m_shape.input_vertex(input_index[v])->vertex_index()];
-      if(r != none || !std::isfinite(p.max_curvature))
-        continue;
-      r = records.size();
-      Point_curvature<Kernel> record;
-      record.on_surface = true;
-      record.normal = normal[v];
-      record.mean_curvature = mean[v];
-      record.gaussian_curvature = gaussian[v];
-      record.principal = p;
-      records.push_back(record);
     }
-
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    Point_curvature<Kernel> off;
-    off.normal = Vector(nan, nan, nan);
-    off.principal = Principal_curvatures_and_directions<Kernel>{nan, nan, off.normal, off.normal};
-    std::vector<Point_curvature<Kernel> > per_point(m_shape.number_of_input_points(), off);
-    for(std::size_t i = 0; i < per_point.size(); ++i)
-    {
-      const std::size_t r = record_of_vertex[m_shape.input_vertex(i)->vertex_index()];
-      if(r != none)
-        per_point[i] = records[r];
-    }
-    return per_point;
+    return values_per_point(surface);
   }
 
 private:
+  // The values of `surface`'s properties for every input point (see
+  // `estimate_curvatures()`).
+  std::vector<Point_curvature<Kernel> > values_per_point(const Surface& surface) const
+  {
+    auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
+    auto normal = surface.template property_map<Surface_vertex, Vector>("v:normal").first;
+    auto used_radius = surface.template property_map<Surface_vertex, double>("v:radius").first;
+    auto k1 = surface.template property_map<Surface_vertex, double>("v:k1").first;
+    auto k2 = surface.template property_map<Surface_vertex, double>("v:k2").first;
+    auto d1 = surface.template property_map<Surface_vertex, Vector>("v:d1").first;
+    auto d2 = surface.template property_map<Surface_vertex, Vector>("v:d2").first;
+
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const Vector nan_vector(nan, nan, nan);
+    auto record = [&](Point_source source, double distance, double r, const Vector& n, double max_k, double min_k,
+                      const Vector& max_d, const Vector& min_d) {
+      Point_curvature<Kernel> c;
+      c.source = source;
+      c.distance = distance;
+      c.radius = r;
+      c.normal = n;
+      c.mean_curvature = (max_k + min_k) / 2;
+      c.gaussian_curvature = max_k * min_k;
+      c.principal = Principal_curvatures_and_directions<Kernel>{max_k, min_k, max_d, min_d};
+      return c;
+    };
+    const Point_curvature<Kernel> none = record(NO_VALUE, nan, nan, nan_vector, nan, nan, nan_vector, nan_vector);
+
+    // own vertices first; at a pinch, the first umbrella's defined estimate
+    std::vector<Point_curvature<Kernel> > by_vertex(m_shape.number_of_vertices(), none);
+    for(Surface_vertex v : surface.vertices())
+    {
+      Point_curvature<Kernel>& c = by_vertex[m_shape.input_vertex(input_index[v])->vertex_index()];
+      if(c.source == NO_VALUE && std::isfinite(k1[v]))
+        c = record(SURFACE_VERTEX, 0, used_radius[v], normal[v], k1[v], k2[v], d1[v], d2[v]);
+    }
+
+    // the others from the nearest point of the surface
+    typedef CGAL::AABB_face_graph_triangle_primitive<Surface> Primitive;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
+    Tree tree;
+    if(!CGAL::is_empty(surface))
+    {
+      tree.insert(faces(surface).first, faces(surface).second, surface);
+      tree.accelerate_distance_queries();
+    }
+    const std::vector<double> spacing = internal::kth_shortest_edge_lengths<3>(m_shape);
+    for(typename Shape::Finite_vertices_iterator vit = m_shape.finite_vertices_begin();
+        vit != m_shape.finite_vertices_end(); ++vit)
+    {
+      Point_curvature<Kernel>& c = by_vertex[vit->vertex_index()];
+      if(c.source != NO_VALUE || tree.empty())
+        continue;
+      const Point& p = vit->point();
+      const auto nearest = tree.closest_point_and_primitive(p);
+      c.distance = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)));
+      if(c.distance > far_from_surface() * spacing[vit->vertex_index()])
+        continue;
+      // barycentric weights of the nearest point, over the corners with values
+      Surface_vertex corner[3];
+      int i = 0;
+      for(Surface_vertex u : vertices_around_face(surface.halfedge(nearest.second), surface))
+        corner[i++] = u;
+      double weight[3], total = 0;
+      for(int j = 0; j < 3; ++j)
+      {
+        weight[j] = std::isfinite(k1[corner[j]])
+          ? std::sqrt(CGAL::to_double(CGAL::squared_area(nearest.first, surface.point(corner[(j + 1) % 3]),
+                                                         surface.point(corner[(j + 2) % 3]))))
+          : 0.;
+        total += weight[j];
+      }
+      if(!(total > 0))  // a degenerate facet: its corners with values, alike
+        for(int j = 0; j < 3; ++j)
+          total += (weight[j] = std::isfinite(k1[corner[j]]) ? 1. : 0.);
+      if(!(total > 0))
+        continue;
+      Vector n = CGAL::NULL_VECTOR, max_d = CGAL::NULL_VECTOR;
+      double r = 0, max_k = 0, min_k = 0;
+      int reference = -1;
+      for(int j = 0; j < 3; ++j)
+      {
+        if(!(weight[j] > 0))
+          continue;
+        const double w = weight[j] / total;
+        if(reference < 0)
+          reference = j;
+        n = n + w * normal[corner[j]];
+        // a principal direction is a line: align signs before averaging
+        max_d = max_d + (d1[corner[j]] * d1[corner[reference]] < 0 ? -w : w) * d1[corner[j]];
+        r += w * used_radius[corner[j]];
+        max_k += w * k1[corner[j]];
+        min_k += w * k2[corner[j]];
+      }
+      n = n / std::sqrt(CGAL::to_double(n.squared_length()));
+      max_d = max_d - (max_d * n) * n;
+      max_d = max_d / std::sqrt(CGAL::to_double(max_d.squared_length()));
+      const double distance = c.distance;
+      c = record(NEAREST_SURFACE_POINT, distance, r, n, max_k, min_k, max_d, CGAL::cross_product(n, max_d));
+    }
+
+    std::vector<Point_curvature<Kernel> > per_point(m_shape.number_of_input_points());
+    for(std::size_t i = 0; i < per_point.size(); ++i)
+      per_point[i] = by_vertex[m_shape.input_vertex(i)->vertex_index()];
+    return per_point;
+  }
+
   Shape m_shape;
   Surface_extraction m_extraction = ADVANCING_FRONT;
   std::vector<Vector> m_reference_normals;
@@ -316,32 +533,50 @@ struct Curvature_layer
 {
   Scale scale;                        ///< as requested
   double alpha;                       ///< its absolute value
-  int ring_size;
+  Neighborhood neighborhood;          ///< as requested
   Surface_report surface;             ///< what the extraction did
   std::vector<Point_curvature<Kernel> > points;  ///< by input index
 };
 
+/// \ingroup PkgConformalAlphaShapes3Multiscale
+/// The scales of `multiscale_curvatures()` and of the program when none are
+/// named: the automatic one (see the manual for why coarser conformal scales
+/// are not in the default: above the automatic scale the advancing front
+/// gives nearly the same surface; the neighbourhood radius is what coarsens).
+inline std::vector<Scale> default_scales() { return {Scale::automatic()}; }
+
+/// \ingroup PkgConformalAlphaShapes3Multiscale
+/// The neighbourhoods of `multiscale_curvatures()` and of the program when
+/// none are named: the automatic one, then radii of 2, 4, 8 and 16 sample
+/// spacings, from the finest detail to a summary of larger regions.
+inline std::vector<Neighborhood> default_neighborhoods()
+{
+  return {Neighborhood::automatic(), Neighborhood::spacings(2), Neighborhood::spacings(4),
+          Neighborhood::spacings(8), Neighborhood::spacings(16)};
+}
+
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
-For each requested scale and ring size, the curvature of every input point
-(METHOD: section 6), from one conformal alpha shape of the points. The
-layers come scale by scale, ring sizes inside. For large inputs, where all
-layers do not fit in memory, use `Multiscale_curvatures` one layer at a time.
+For each requested scale and neighbourhood, the curvature of every input
+point (see the manual, section "Multi-scale Curvature of a Point Cloud"),
+from one conformal alpha shape of the points. The layers come scale by
+scale, neighbourhoods inside. For large inputs, where all layers do not fit
+in memory, use `Multiscale_curvatures` one layer at a time.
 
 \tparam PointRange a range of `Kernel::Point_3`
 \tparam NamedParameters a sequence of named parameters
 
 \cgalNamedParamsBegin
   \cgalParamNBegin{scales}
-    \cgalParamDescription{the scales}
+    \cgalParamDescription{the scales; the paper's figures use the quantiles 10%, 25%, 35% and 50%}
     \cgalParamType{`std::vector<Scale>`}
-    \cgalParamDefault{the quantiles 10%, 25%, 35% and 50%, as in the paper's figures}
+    \cgalParamDefault{`default_scales()`}
   \cgalParamNEnd
-  \cgalParamNBegin{ring_sizes}
-    \cgalParamDescription{the ring sizes}
-    \cgalParamType{`std::vector<int>`}
-    \cgalParamDefault{1 and 2}
+  \cgalParamNBegin{neighborhoods}
+    \cgalParamDescription{the neighbourhoods of the curvature fits}
+    \cgalParamType{`std::vector<Neighborhood>`}
+    \cgalParamDefault{`default_neighborhoods()`}
   \cgalParamNEnd
   \cgalParamNBegin{estimator}
     \cgalParamDescription{the curvature estimator}
@@ -353,8 +588,8 @@ layers do not fit in memory, use `Multiscale_curvatures` one layer at a time.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\throws std::invalid_argument as `Conformal_alpha_shape_3`, and when a ring
-size is below 1.
+\throws std::invalid_argument as `Conformal_alpha_shape_3` and
+`estimate_vertex_curvatures()`.
 */
 template <class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<Curvature_layer<typename Kernel_traits<typename PointRange::value_type>::Kernel> >
@@ -363,14 +598,9 @@ multiscale_curvatures(const PointRange& points, const NamedParameters& np = CGAL
   typedef typename Kernel_traits<typename PointRange::value_type>::Kernel Kernel;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const std::vector<Scale> scales = choose_parameter(
-    get_parameter(np, internal_np_cas3::scales),
-    std::vector<Scale>{Scale::quantile(0.10), Scale::quantile(0.25), Scale::quantile(0.35), Scale::quantile(0.50)});
-  const std::vector<int> ring_sizes = choose_parameter(get_parameter(np, internal_np_cas3::ring_sizes),
-                                                       std::vector<int>{1, 2});
-  for(int k : ring_sizes)
-    if(k < 1)
-      throw std::invalid_argument("multiscale_curvatures: ring size " + std::to_string(k) + " is below 1");
+  const std::vector<Scale> scales = choose_parameter(get_parameter(np, internal_np_cas3::scales), default_scales());
+  const std::vector<Neighborhood> neighborhoods =
+    choose_parameter(get_parameter(np, internal_np_cas3::neighborhoods), default_neighborhoods());
   const Curvature_estimator estimator = choose_parameter(get_parameter(np, internal_np_cas3::estimator), QUADRIC_FIT);
 
   const Multiscale_curvatures<Kernel> analysis(points.begin(), points.end(), np);
@@ -380,9 +610,9 @@ multiscale_curvatures(const PointRange& points, const NamedParameters& np = CGAL
     typename Multiscale_curvatures<Kernel>::Surface surface;
     const double alpha = analysis.alpha(scale);
     const Surface_report report = analysis.extract_surface(alpha, surface);
-    for(int k : ring_sizes)
-      layers.push_back(Curvature_layer<Kernel>{scale, alpha, k, report,
-                                               analysis.estimate_curvatures(surface, k, estimator)});
+    for(const Neighborhood& neighborhood : neighborhoods)
+      layers.push_back(Curvature_layer<Kernel>{scale, alpha, neighborhood, report,
+                                               analysis.estimate_curvatures(surface, neighborhood, estimator)});
   }
   return layers;
 }

@@ -23,11 +23,14 @@ enum vertex_input_index_map_t { vertex_input_index_map };
 enum local_scale_estimator_t { local_scale_estimator };
 enum minimum_fraction_on_surface_t { minimum_fraction_on_surface };
 enum scales_t { scales };
-enum ring_sizes_t { ring_sizes };
 enum reference_normals_t { reference_normals };
 enum surface_extraction_t { surface_extraction };
 enum denoising_t { denoising };
 enum denoising_neighbors_t { denoising_neighbors };
+enum neighborhood_radius_t { neighborhood_radius };
+enum neighborhood_radii_t { neighborhood_radii };
+enum vertex_neighborhood_radius_map_t { vertex_neighborhood_radius_map };
+enum neighborhoods_t { neighborhoods };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -71,11 +74,14 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale_estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(minimum_fraction_on_surface)
 CGAL_CAS3_ADD_NAMED_PARAMETER(scales)
-CGAL_CAS3_ADD_NAMED_PARAMETER(ring_sizes)
 CGAL_CAS3_ADD_NAMED_PARAMETER(reference_normals)
 CGAL_CAS3_ADD_NAMED_PARAMETER(surface_extraction)
 CGAL_CAS3_ADD_NAMED_PARAMETER(denoising)
 CGAL_CAS3_ADD_NAMED_PARAMETER(denoising_neighbors)
+CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhood_radius)
+CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhood_radii)
+CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_neighborhood_radius_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhoods)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

@@ -54,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       analysis.extract_surface(analysis.alpha(scale), surface);
       for(int rings : {1, 2})
       {
-        const auto curvatures = analysis.estimate_curvatures(surface, rings);
+        const auto curvatures = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(rings));
         if(curvatures.size() != input.points.size())
           std::abort();
       }

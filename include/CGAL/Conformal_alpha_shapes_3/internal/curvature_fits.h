@@ -161,7 +161,12 @@ inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbour>&
 // n. The linear terms absorb the normal's error and the constant term the
 // vertex's own displacement (noise); the curvature is that of the graph at
 // the origin. Curvature is positive where the surface bends away from n.
-inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local_curvature& out)
+// When `mean_curvature_error` is given, it receives the standard error of
+// the mean curvature A + C implied by the fit's residuals (infinite when the
+// fit has no degrees of freedom left): what the automatic neighbourhood
+// weighs against the bias of larger neighbourhoods.
+inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local_curvature& out,
+                        double* mean_curvature_error = nullptr)
 {
   if(nbrs.size() < 5)
     return false;
@@ -200,6 +205,27 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local
     return false;
   const Vector6 coef = ldlt.solve(rhs);
   const double A = coef(0) / h, B = coef(1) / h, C = coef(2) / h, D = coef(3), E = coef(4);
+  if(mean_curvature_error != nullptr)
+  {
+    double residuals = coef(5) * coef(5), weights = 1;  // the vertex's own row
+    for(const Neighbour& q : nbrs)
+    {
+      const Vec3 o = q.offset / h;
+      const double x = o.dot(f.e1), y = o.dot(f.e2);
+      const double t = o.squaredNorm() / (2.25 * reach * reach);
+      const double w2 = (1 - t) * (1 - t) * (1 - t) * (1 - t);
+      Vector6 row;
+      row << x * x, x * y, y * y, x, y, 1;
+      const double r = o.dot(f.n) - row.dot(coef);
+      residuals += w2 * r * r;
+      weights += w2;
+    }
+    Vector6 mean_row = Vector6::Zero();
+    mean_row(0) = mean_row(2) = 1;
+    const double spread = mean_row.dot(ldlt.solve(mean_row));
+    *mean_curvature_error = weights > 6 ? std::sqrt(residuals / (weights - 6) * spread) / h
+                                        : std::numeric_limits<double>::infinity();
+  }
 
   // first and second fundamental forms of (x, y, z(x, y)) at the origin,
   // the second one for the normal (-D, -E, 1) / w
