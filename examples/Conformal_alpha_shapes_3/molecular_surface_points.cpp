@@ -37,11 +37,11 @@ const char* const usage =
   "the first model; Bondi van der Waals radii by element) and writes the points,\n"
   "one 'x y z' line each (angstroms), for conformal_curvature.\n"
   "  OUTPUT.xyz        default: INPUT with the extension .xyz\n"
-  "  --method NAME     skin (default): the skin surface of the van der Waals balls\n"
-  "                    (shrink factor 0.5), a smooth molecular surface;\n"
+  "  --method NAME     skin (default): the skin surface of the van der Waals balls,\n"
+  "                    a smooth molecular surface;\n"
   "                    vdw: the van der Waals spheres' exposed parts;\n"
   "                    sas: the exposed parts of the spheres of radius r + probe\n"
-  "  --shrink S        shrink factor of the skin in (0, 1), default 0.5: smaller\n"
+  "  --shrink S        shrink factor of the skin in (0, 1), default 0.35: smaller\n"
   "                    fills the crevices between atoms more\n"
   "  --spacing H       minimum distance between points, default 0.4\n"
   "  --probe P         probe radius of sas (and of the --stats comparison), 1.4\n"
@@ -70,7 +70,7 @@ struct Failure : std::runtime_error
 struct Options
 {
   std::string input, output, method = "skin", mesh;
-  double spacing = 0.4, probe = 1.4, shrink = 0.5;
+  double spacing = 0.4, probe = 1.4, shrink = 0.35;
   bool normals = false, cavities = false, check = false, stats = false, quiet = false, help = false;
   std::size_t min_points = 0, max_points = std::size_t(-1);
   cas3::Pdb_options pdb;
@@ -266,13 +266,14 @@ std::vector<std::string> check(const cas3::Surface_sample& s, const std::vector<
     if(std::abs(std::sqrt(s.normals[i].squared_length()) - 1) > 1e-9)
       fail("the normal of point " + std::to_string(i) + " is not a unit vector");
     const Vector radial = (p - own.centre) / d;
-    const bool patch = std::abs(d - R) <= 1e-6 * R;  // on its atom's sphere
+    // on its atom's sphere (the skin's vertices are placed by bisection)
+    const bool patch = std::abs(d - R) <= (o.method == "skin" ? 1e-4 : 1e-9 * R);
     on_sphere += patch ? 1 : 0;
     if(o.method != "skin" && !patch)
       fail("point " + std::to_string(i) + " is " + std::to_string(d) + " from the centre of its atom (line "
            + std::to_string(own.line) + "), not on its sphere of radius " + std::to_string(R));
     // on a sphere patch the outward normal is radial
-    if(patch && s.normals[i] * radial < 1 - 1e-6)
+    if(patch && s.normals[i] * radial < (o.method == "skin" ? 0.999 : 1 - 1e-9))
       fail("the normal of point " + std::to_string(i) + " is not the outward radius of its sphere (cos "
            + std::to_string(s.normals[i] * radial) + ")");
     double gap = std::numeric_limits<double>::infinity();  // to the nearest sphere, outside
@@ -282,7 +283,7 @@ std::vector<std::string> check(const cas3::Surface_sample& s, const std::vector<
       const double dj = std::sqrt(CGAL::squared_distance(p, atoms[j].centre)) - Rj;
       gap = std::min(gap, dj);
       // the skin's vertices are placed by bisection: a tolerance of 1e-3
-      if(dj < (o.method == "skin" ? -1e-3 : -1e-6 * Rj))
+      if(dj < (o.method == "skin" ? -1e-3 : -1e-9 * Rj))
         fail("point " + std::to_string(i) + " is inside the sphere of the atom on line "
              + std::to_string(atoms[j].line) + " by " + std::to_string(-dj));
     }
@@ -321,9 +322,9 @@ int run(const Options& o)
       const Point& p = sample.points[i];
       const Vector& n = sample.normals[i];
       if(o.normals)
-        std::snprintf(line, sizeof line, "%.6f %.6f %.6f %.6f %.6f %.6f\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z());
+        std::snprintf(line, sizeof line, "%.5f %.5f %.5f %.5f %.5f %.5f\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z());
       else
-        std::snprintf(line, sizeof line, "%.6f %.6f %.6f\n", p.x(), p.y(), p.z());
+        std::snprintf(line, sizeof line, "%.5f %.5f %.5f\n", p.x(), p.y(), p.z());
       out << line;
     }
     out.close();
@@ -342,9 +343,9 @@ int run(const Options& o)
     std::printf("%s: %zu atoms; %s surface, spacing %.3g: %zu points in %.2f s", o.input.c_str(), atoms.size(),
                 o.method.c_str(), o.spacing, sample.points.size(), seconds);
     if(o.method == "skin")
-      std::printf(" (skin mesh: %zu vertices, %zu faces, %d subdivisions; %zu cavities %s)",
+      std::printf(" (skin mesh: %zu vertices, %zu faces, %d subdivisions; %zu part(s); %zu cavities %s)",
                   skin.mesh.size_of_vertices(), skin.mesh.size_of_facets(), skin.subdivisions,
-                  skin.number_of_cavities, o.cavities ? "kept" : "left out");
+                  skin.number_of_parts, skin.number_of_cavities, o.cavities ? "kept" : "left out");
     std::printf("\nwritten to %s%s\n", o.output.c_str(), o.normals ? " with normals" : "");
   }
   if(o.stats)

@@ -32,15 +32,22 @@
 //
 // 3. Two samplings of a surface around the atoms (all lengths in angstroms):
 //    - sample_skin_surface(): the skin surface (CGAL Skin_surface_3) of the
-//      atoms' van der Waals balls with shrink factor 0.5. It is a smooth
-//      (tangent-continuous) closed surface made of patches of the atoms'
-//      van der Waals spheres (where an atom is exposed) joined by patches of
-//      hyperboloids and of inward spheres over the crevices between atoms:
-//      a smooth stand-in for the molecular (solvent-excluded) surface, as in
-//      Edelsbrunner's "Deformable smooth surface design" (1999). The points
-//      are vertices of CGAL's skin mesh, subdivided until its edges are
-//      shorter than half the spacing, so they lie on the skin; normals are
-//      the gradient of the skin's quadric at the point, outward.
+//      atoms' van der Waals balls, shrink factor 0.35 by default. It is a
+//      smooth (tangent-continuous) closed surface made of patches of the
+//      atoms' van der Waals spheres (where an atom is exposed) joined by
+//      patches of hyperboloids and of inward spheres over the crevices
+//      between atoms (Edelsbrunner, "Deformable smooth surface design",
+//      1999): a smooth stand-in for the molecular (solvent-excluded)
+//      surface. The balls are grown by CGAL (weights r^2 / s) so that the
+//      sphere patches have the van der Waals radii; the smaller the shrink
+//      factor s, the more the blends fill the crevices: on crambin, s = 0.35
+//      keeps 95% of the points within 0.32 A of the solvent-excluded surface
+//      of a 1.4 A probe (s = 0.5: 2.4 A, as it dips into the crevices). The
+//      points are vertices of CGAL's skin mesh, subdivided until its mean
+//      edge is below half the spacing, so they lie on the skin; normals are
+//      the gradient of the skin's quadric at the point, outward. Cavities
+//      (closed components of the skin inside the molecule) are left out
+//      unless asked.
 //    - sample_atom_spheres(): points of the atoms' spheres of radius
 //      r + probe (probe 0: the van der Waals surface; probe 1.4: the
 //      solvent-accessible surface) that are inside no other such ball, with
@@ -396,6 +403,7 @@ struct Skin_surface_sample
   Mesh mesh;              // the subdivided skin mesh, the reference surface
   Surface_sample sample;  // its vertices, thinned
   int subdivisions = 0;
+  std::size_t number_of_parts = 0;     // components of the outer surface
   std::size_t number_of_cavities = 0;  // components erased (or kept) as cavities
 };
 
@@ -404,7 +412,7 @@ struct Skin_surface_sample
 // of largest volume (cavities) unless `keep`. Returns +1 when the facets are
 // oriented outward, -1 when inward.
 template <class Mesh>
-double remove_cavities(Mesh& mesh, bool keep, std::size_t& number_of_cavities)
+double remove_cavities(Mesh& mesh, bool keep, std::size_t& number_of_parts, std::size_t& number_of_cavities)
 {
   typedef typename Mesh::Facet_handle Facet_handle;
   typedef typename Mesh::Halfedge_handle Halfedge_handle;
@@ -447,8 +455,11 @@ double remove_cavities(Mesh& mesh, bool keep, std::size_t& number_of_cavities)
       largest = c;
   const double outward = volume6.empty() || volume6[largest] >= 0 ? 1 : -1;
   number_of_cavities = 0;
+  number_of_parts = 0;
   for(std::size_t c = 0; c < volume6.size(); ++c)
-    if(outward * volume6[c] < 0)
+    if(outward * volume6[c] >= 0)
+      ++number_of_parts;
+    else
     {
       ++number_of_cavities;
       if(!keep)
@@ -485,12 +496,13 @@ double mean_edge_length(const Mesh& mesh)
   return n == 0 ? 0 : sum / double(n);
 }
 
-// Samples the skin surface of the atoms' van der Waals balls: the mesh is
+// Samples the skin surface (shrink factor `shrink`) of the atoms' van der
+// Waals balls: the mesh is
 // subdivided (at most 6 times, each sqrt(3) subdivision dividing its edges
 // by about 1.7) until its mean edge is below spacing / 2, then its vertices
 // are thinned to `spacing`. Normals: the gradient of the skin at the vertex.
 inline void sample_skin_surface(const std::vector<Atom>& atoms, double spacing, Skin_surface_sample& result,
-                                bool keep_cavities = false, double shrink = 0.5)
+                                bool keep_cavities = false, double shrink = 0.35)
 {
   using namespace molecule_detail;
   typedef Skin_surface_sample::Skin Skin;
@@ -515,7 +527,7 @@ inline void sample_skin_surface(const std::vector<Atom>& atoms, double spacing, 
   // outer surface of the molecule (or of its largest piece) and tells the
   // outward orientation. Components of the opposite sign bound cavities
   // inside the molecule: they are erased, unless keep_cavities.
-  const double outward = remove_cavities(result.mesh, keep_cavities, result.number_of_cavities);
+  const double outward = remove_cavities(result.mesh, keep_cavities, result.number_of_parts, result.number_of_cavities);
   Surface_sample dense;
   CGAL::Cartesian_converter<Molecule_kernel, Skin::Geometric_traits::Kernel> to_skin;
   CGAL::Cartesian_converter<Skin::Geometric_traits::Kernel, Molecule_kernel> from_skin;
