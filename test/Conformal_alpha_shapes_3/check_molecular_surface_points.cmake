@@ -40,6 +40,8 @@ run(blank.pdb "${head}${blank_y}\n" 1 "blank.pdb:2: y coordinate \\(columns 39-4
 string(REPLACE "           N  " "          N1  " bad_element "${N_LINE}")
 run(element.pdb "${head}${bad_element}\n" 1 "element.pdb:2: element symbol \\(columns 77-78\\) is not letters: 'N1'")
 run(iron.pdb "${head}${N_LINE}\n${FE_LINE}\n" 1 "iron.pdb:3: no Bondi radius for element 'FE' \\(give a default radius\\)")
+set(CA_ION_LINE "HETATM    6 CA    CA A 103      14.000  10.000  10.000  1.00 10.00              ")
+run(calcium.pdb "${head}${N_LINE}\n${CA_ION_LINE}\n" 1 "calcium.pdb:3: no Bondi radius for element 'CA'")
 run(empty.pdb "${head}REMARK nothing\n" 1 "empty.pdb: no ATOM or HETATM record")
 run(only_water.pdb "${head}${W_LINE}\n" 1 "only_water.pdb: every atom was left out")
 execute_process(COMMAND ${PROGRAM} ${WORK_DIR}/missing.pdb RESULT_VARIABLE result ERROR_VARIABLE err)

@@ -9,7 +9,10 @@
 //    from the atom name by the PDB convention: a one-letter element sits in
 //    column 14 (" CA " is a carbon), a two-letter element starts in column 13
 //    ("FE  ", "CA  " in a HETATM record is calcium), and four-character
-//    hydrogen names start in column 13 ("HG11").
+//    names start in column 13 ("HG11" is a hydrogen). Without columns 77-78,
+//    a HETATM name with letters in columns 13-14 is a two-letter element
+//    unless it starts with H or D (read as hydrogen: "HG  " mercury needs
+//    columns 77-78).
 //    Kept: the first model only (reading stops at the first ENDMDL or END);
 //    of atoms with alternate locations, those with a blank location or the
 //    first location seen (usually 'A'). Left out unless asked: hydrogens (H,
@@ -158,11 +161,10 @@ inline std::string element_from_name(const std::string& name, bool hetatm)
   const char c13 = name[0], c14 = name[1];
   if(!is_letter(c13))
     return is_letter(c14) ? upper(std::string(1, c14)) : std::string();
-  const std::string two = upper(std::string{c13, c14});
-  if(!hetatm && (c13 == 'H' || c13 == 'h' || c13 == 'D' || c13 == 'd'))
-    return upper(std::string(1, c13));  // a four-character hydrogen name
-  if(is_letter(c14) && bondi_radius(two) > 0)
-    return two;
+  // a letter in column 13: a two-letter element of a HETATM record ("FE  ",
+  // "CA  " calcium), else a four-character name ("HG11" a hydrogen, "C10A")
+  if(hetatm && is_letter(c14) && c13 != 'H' && c13 != 'h' && c13 != 'D' && c13 != 'd')
+    return upper(std::string{c13, c14});
   return upper(std::string(1, c13));
 }
 
