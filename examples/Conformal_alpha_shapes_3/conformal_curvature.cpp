@@ -635,8 +635,11 @@ int run(const Options& o)
     Analysis::Surface written = surface_in_input_units(surface, input, points);
     for(const CAS3::Neighborhood& neighborhood : o.neighborhoods)
     {
+      // a radius in model units: the library works on the normalised points
+      const CAS3::Neighborhood normalized = neighborhood.kind() == CAS3::Neighborhood::RADIUS
+        ? CAS3::Neighborhood::radius(input.length_from_input(neighborhood.value())) : neighborhood;
       const std::vector<CAS3::Point_curvature<K> > curvatures =
-        to_input_units(analysis->estimate_curvatures(surface, neighborhood, o.estimator), input, points.size());
+        to_input_units(analysis->estimate_curvatures(surface, normalized, o.estimator), input, points.size());
       Layer layer;
       layer.label = (o.scales.size() > 1 ? file_label(scale) + "_" : std::string()) + neighborhood.label();
       std::ostringstream description;
@@ -646,7 +649,7 @@ int run(const Options& o)
       else if(neighborhood.kind() == CAS3::Neighborhood::AUTOMATIC)
         description << "radius chosen per point (radius_" << layer.label << ")";
       else
-        description << "radius " << input.length_to_input(analysis->radius(neighborhood));
+        description << "radius " << input.length_to_input(analysis->radius(normalized));
       layer.description = description.str();
       layer.values.resize(points.size() * Layer::number_of_values);
       layer.source.resize(points.size());

@@ -91,6 +91,7 @@ struct Normalized_input
     return Point(difference(p.x(), centre[0]), difference(p.y(), centre[1]), difference(p.z(), centre[2]));
   }
   double length_to_input(double l) const { return std::ldexp(l, size_exponent); }
+  double length_from_input(double l) const { return std::ldexp(l, -size_exponent); }
   // mean and principal curvatures
   double curvature_to_input(double k) const { return std::ldexp(k, -size_exponent); }
   double gaussian_curvature_to_input(double k) const { return std::ldexp(k, -2 * size_exponent); }
