@@ -5,6 +5,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
@@ -89,53 +91,83 @@ void write_xyz(const fs::path& file, const std::vector<Point>& pts)
 
 } // namespace
 
+// The default job: every point has finite values at every default layer,
+// in a binary PLY point cloud that reads back; the layers differ; the CSV
+// holds the same numbers and is at least three times larger.
 BOOST_AUTO_TEST_CASE(bunny_default_run)
 {
   fs::remove_all(work / "bunny");
-  const Run r = run("--output bunny --quiet");
+  const Run r = run("--output bunny --quiet --csv");
   BOOST_REQUIRE_EQUAL(r.exit_code, 0);
   BOOST_TEST(r.err.empty());
+  const std::vector<std::string> layers = {"rauto", "r2s", "r4s", "r8s", "r16s"};
 
-  const Csv csv = read_csv(work / "bunny" / "curvatures.csv");
-  const std::vector<std::string> expected = {"point_index", "x", "y", "z", "alpha_hat", "rings", "on_surface",
-                                             "nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z",
-                                             "d2x", "d2y", "d2z", "outlier"};
-  BOOST_TEST(csv.header == expected, boost::test_tools::per_element());
-  BOOST_REQUIRE_EQUAL(csv.rows.size(), 5000u * 4 * 2);  // points x scales x rings
-  std::size_t on = 0;
-  for(const auto& row : csv.rows)
+  CGAL::Point_set_3<Point> cloud;
   {
-    BOOST_REQUIRE_EQUAL(row.size(), expected.size());
-    BOOST_TEST((row[5] == 1 || row[5] == 2));
-    if(row[6] != 1)
-    {
-      BOOST_TEST(std::isnan(row[10]));
-      continue;
-    }
-    ++on;
-    for(std::size_t k = 7; k < row.size(); ++k)
-      BOOST_TEST(std::isfinite(row[k]));
-    BOOST_TEST(row[12] >= row[13]);                                                   // k1 >= k2
-    BOOST_TEST(std::abs(row[7] * row[7] + row[8] * row[8] + row[9] * row[9] - 1) < 1e-6);  // unit normal
-    BOOST_TEST(row[10] == (row[12] + row[13]) / 2, boost::test_tools::tolerance(1e-9));
+    std::ifstream in(work / "bunny" / "curvatures.ply", std::ios::binary);
+    BOOST_REQUIRE(CGAL::IO::read_PLY(in, cloud));
   }
-  BOOST_TEST(on > csv.rows.size() * 4 / 10);  // few at 10%, most from 35% on
-
-  // the PLY surfaces read back with their properties
-  for(const char* scale : {"10pct", "25pct", "35pct", "50pct"})
-    for(int rings : {1, 2})
+  BOOST_REQUIRE_EQUAL(cloud.size(), 5000u);
+  std::vector<std::vector<double> > H(layers.size());
+  for(std::size_t l = 0; l < layers.size(); ++l)
+  {
+    auto property = [&](const std::string& name) {
+      auto map = cloud.property_map<float>(name + "_" + layers[l]);
+      BOOST_TEST_INFO(name + "_" + layers[l]);
+      BOOST_REQUIRE(map.second);
+      return map.first;
+    };
+    auto source = cloud.property_map<unsigned char>("source_" + layers[l]);
+    BOOST_REQUIRE(source.second);
+    auto nx = property("nx"), ny = property("ny"), nz = property("nz"), h = property("H"), k1 = property("k1"),
+         k2 = property("k2"), radius = property("radius"), distance = property("distance");
+    for(auto i : cloud)
     {
-      const fs::path file = work / "bunny" / ("surface_" + std::string(scale) + "_rings" + std::to_string(rings) + ".ply");
-      Mesh mesh;
-      std::ifstream in(file, std::ios::binary);
-      BOOST_TEST_INFO(file);
-      BOOST_REQUIRE(CGAL::IO::read_PLY(in, mesh));
-      BOOST_TEST(mesh.number_of_faces() > 0u);
-      for(const char* property : {"v:mean_curvature", "v:gaussian_curvature", "v:k1", "v:k2"})
-        BOOST_TEST((mesh.property_map<Mesh::Vertex_index, double>(property).second));
-      BOOST_TEST((mesh.property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").second));
-      BOOST_TEST((mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").second));
+      BOOST_TEST_INFO(layers[l] << " point " << std::size_t(i));
+      BOOST_REQUIRE(source.first[i] <= 1);  // its own vertex or the nearest surface point
+      BOOST_REQUIRE((std::isfinite(h[i]) && std::isfinite(k1[i]) && std::isfinite(radius[i]) &&
+                     std::isfinite(distance[i])));
+      BOOST_REQUIRE(k1[i] >= k2[i]);
+      BOOST_REQUIRE(std::abs(nx[i] * nx[i] + ny[i] * ny[i] + nz[i] * nz[i] - 1) < 1e-5);
+      BOOST_REQUIRE(std::abs(h[i] - (k1[i] + k2[i]) / 2) <= 1e-5 * (std::abs(h[i]) + 1));
+      H[l].push_back(h[i]);
     }
+  }
+  // fine and coarse layers differ: the spread of H shrinks as the radius grows
+  auto spread = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() * 9 / 10] - v[v.size() / 10];
+  };
+  BOOST_TEST_MESSAGE("spread of H at 2, 4, 8, 16 spacings: " << spread(H[1]) << " " << spread(H[2]) << " "
+                     << spread(H[3]) << " " << spread(H[4]));
+  BOOST_TEST(spread(H[1]) > 1.5 * spread(H[3]));
+  BOOST_TEST(spread(H[2]) > 1.2 * spread(H[4]));
+
+  // the CSV: today's columns, then the new ones; the same values
+  const Csv csv = read_csv(work / "bunny" / "curvatures.csv");
+  const std::vector<std::string> expected = {"point_index", "x", "y", "z", "a", "rings", "on_surface",
+                                             "nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z",
+                                             "d2x", "d2y", "d2z", "outlier", "neighborhood", "radius",
+                                             "source", "distance"};
+  BOOST_TEST(csv.header == expected, boost::test_tools::per_element());
+  BOOST_REQUIRE_EQUAL(csv.rows.size(), 5000u * layers.size());
+  for(std::size_t l = 0; l < layers.size(); ++l)
+    for(std::size_t i = 0; i < 5000; ++i)
+      BOOST_REQUIRE(float(csv.rows[l * 5000 + i][10]) == float(H[l][i]));
+  const auto ply_size = fs::file_size(work / "bunny" / "curvatures.ply");
+  const auto csv_size = fs::file_size(work / "bunny" / "curvatures.csv");
+  BOOST_TEST_MESSAGE("point cloud " << ply_size << " bytes, CSV " << csv_size);
+  BOOST_TEST(3 * ply_size <= csv_size);
+
+  // the surface reads back with every layer's values
+  Mesh mesh;
+  std::ifstream in(work / "bunny" / "surface_auto.ply", std::ios::binary);
+  BOOST_REQUIRE(CGAL::IO::read_PLY(in, mesh));
+  BOOST_TEST(mesh.number_of_faces() > 0u);
+  for(const std::string& layer : layers)
+    for(const char* value : {"H_", "K_", "k1_", "k2_", "nx_", "radius_"})
+      BOOST_TEST((mesh.property_map<Mesh::Vertex_index, float>("v:" + std::string(value) + layer).second));
+  BOOST_TEST((mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").second));
 }
 
 BOOST_AUTO_TEST_CASE(noisy_ellipsoid_at_the_automatic_scale)
@@ -143,7 +175,7 @@ BOOST_AUTO_TEST_CASE(noisy_ellipsoid_at_the_automatic_scale)
   const double a = 1.0, b = 0.8, c = 0.6;
   write_xyz(work / "ellipsoid.xyz", cas3_test::ellipsoid_sample<Point>(20000, a, b, c, 1e-4));
   fs::remove_all(work / "ellipsoid");
-  const Run r = run("ellipsoid.xyz --alpha auto,0.5 --rings 3 --output ellipsoid --quiet");
+  const Run r = run("ellipsoid.xyz --alpha auto,0.5 --rings 3 --output ellipsoid --quiet --csv");
   BOOST_REQUIRE_EQUAL(r.exit_code, 0);
   const Csv csv = read_csv(work / "ellipsoid" / "curvatures.csv");
   BOOST_REQUIRE_EQUAL(csv.rows.size(), 20000u * 2);
@@ -272,6 +304,11 @@ BOOST_AUTO_TEST_CASE(bad_input_fails_with_one_line_and_no_output)
     {"--rings 2.5", "--rings: not a ring size from 1 to 100: '2.5'"},
     {"--rings 101", "--rings: not a ring size from 1 to 100: '101'"},
     {"--rings", "option --rings needs a value"},
+    {"--radius 0", "--radius: not a radius: '0'"},
+    {"--radius -2s", "--radius: not a radius: '-2s'"},
+    {"--radius 1,big", "--radius: not a radius: 'big'"},
+    {"--radius nan", "--radius: not a radius: 'nan'"},
+    {"--radius", "option --radius needs a value"},
     {"--estimator magic", "unknown estimator"},
     {"--output", "option --output needs a value"},
     {"--output ''", "--output: empty directory name"},
@@ -346,7 +383,7 @@ Csv run_on(const std::string& name, const std::vector<Point>& points, const std:
 {
   write_xyz(work / name, points);
   fs::remove_all(work / "out_ok");
-  const Run r = run(name + " --alpha auto --rings 2 --output out_ok --quiet " + extra);
+  const Run r = run(name + " --alpha auto --rings 2 --output out_ok --quiet --csv " + extra);
   BOOST_TEST_INFO(name << ": " << r.err);
   BOOST_REQUIRE_EQUAL(r.exit_code, 0);
   return read_csv(work / "out_ok" / "curvatures.csv");
@@ -409,8 +446,8 @@ BOOST_AUTO_TEST_CASE(extreme_input_gives_the_normalised_answer)
   }
   fs::remove_all(work / "out_crlf");
   fs::remove_all(work / "out_lf");
-  BOOST_REQUIRE_EQUAL(run("crlf.xyz --alpha auto --rings 2 --output out_crlf --quiet").exit_code, 0);
-  BOOST_REQUIRE_EQUAL(run("clean.xyz --alpha auto --rings 2 --output out_lf --quiet").exit_code, 0);
+  BOOST_REQUIRE_EQUAL(run("crlf.xyz --alpha auto --rings 2 --output out_crlf --quiet --csv").exit_code, 0);
+  BOOST_REQUIRE_EQUAL(run("clean.xyz --alpha auto --rings 2 --output out_lf --quiet --csv").exit_code, 0);
   // the same values (within 1e-9; measured 2.4e-12 on a direction); not
   // always the same bytes: since the advancing front,
   // the last bits depend on the heap layout (a different file name is enough)
@@ -486,7 +523,7 @@ BOOST_AUTO_TEST_CASE(runs_are_deterministic)
   for(const char* dir : {"first", "second"})
   {
     fs::remove_all(work / dir);
-    BOOST_REQUIRE_EQUAL(run(std::string("--output ") + dir + " --quiet --alpha 35%,auto --rings 1,2").exit_code, 0);
+    BOOST_REQUIRE_EQUAL(run(std::string("--output ") + dir + " --quiet --alpha 35%,auto --rings 1,2 --csv").exit_code, 0);
   }
   std::size_t compared = 0;
   for(const auto& entry : fs::directory_iterator(work / "first"))
@@ -496,7 +533,7 @@ BOOST_AUTO_TEST_CASE(runs_are_deterministic)
     BOOST_TEST(bytes_of(entry.path()) == bytes_of(work / "second" / name));
     ++compared;
   }
-  BOOST_TEST(compared == 5u);  // 2 scales x 2 rings, and the CSV
+  BOOST_TEST(compared == 4u);  // a surface per scale, the point cloud and the CSV
 }
 
 // Normals in the input are read: .xyz with 6 columns, .pwn, PLY nx ny nz.
@@ -516,7 +553,7 @@ BOOST_AUTO_TEST_CASE(inputs_with_normals_run)
   for(const char* name : {"normals.xyz", "normals.pwn", "normals.ply"})
   {
     fs::remove_all(work / "out_n");
-    const Run r = run(std::string(name) + " --alpha auto --rings 1 --output out_n --quiet");
+    const Run r = run(std::string(name) + " --alpha auto --rings 1 --output out_n --quiet --csv");
     BOOST_TEST_INFO(name << ": " << r.err);
     BOOST_TEST(r.exit_code == 0);
     BOOST_TEST(read_csv(work / "out_n" / "curvatures.csv").rows.size() == p.size());
@@ -530,7 +567,7 @@ BOOST_AUTO_TEST_CASE(renders_a_png_headless)
   const fs::path png = work / "picture.png";
   fs::remove(png);
   const std::string command = "'" + std::string(CAS3_RENDERER) + "' '" +
-                              (work / "picture" / "surface_50pct_rings2.ply").string() + "' '" + png.string() +
+                              (work / "picture" / "surface_50pct.ply").string() + "' '" + png.string() +
                               "' --size 64";
   BOOST_REQUIRE_EQUAL(std::system(command.c_str()), 0);
   std::ifstream in(png, std::ios::binary);
