@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include "cas3_analytic_surfaces.h"
@@ -487,4 +488,161 @@ BOOST_AUTO_TEST_CASE(noise_estimate)
     }
   }
   BOOST_TEST(CAS3::estimate_noise(std::vector<Point>(10, Point(0, 0, 0))).noise == 0);
+}
+
+// ---------------------------------------------------------------------------
+// Every point at every scale, radius neighbourhoods, the automatic radius
+
+namespace {
+
+typedef CAS3::Multiscale_curvatures<K> Analysis;
+
+double median(std::vector<double> v)
+{
+  BOOST_REQUIRE(!v.empty());
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+} // namespace
+
+// Points that are not vertices take the values of the nearest surface point:
+// on a unit sphere whose surface lost a cap, H = 1 and the normal is radial
+// there too; points farther than the documented multiple of the spacing
+// have no value.
+BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
+{
+  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(4000, 1, 1, 1);
+  const Analysis analysis(pts.begin(), pts.end());
+  Analysis::Surface surface;
+  analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+  // remove the cap z > 0.8 from the surface
+  std::vector<Analysis::Surface::Face_index> cap;
+  for(auto f : surface.faces())
+    for(auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+      if(surface.point(v).z() > 0.8)
+      {
+        cap.push_back(f);
+        break;
+      }
+  for(auto f : cap)
+    CGAL::Euler::remove_face(surface.halfedge(f), surface);
+  surface.collect_garbage();
+
+  const std::vector<CAS3::Point_curvature<K> > c = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
+  std::size_t own = 0, nearest = 0, none = 0;
+  const double spacing = std::sqrt(4 * M_PI / 4000);
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const K::Vector_3 radial = (pts[i] - CGAL::ORIGIN) / std::sqrt((pts[i] - CGAL::ORIGIN).squared_length());
+    BOOST_TEST_INFO("point " << i << " at z = " << pts[i].z() << ", distance " << c[i].distance);
+    switch(c[i].source)
+    {
+      case CAS3::SURFACE_VERTEX:
+        ++own;
+        BOOST_REQUIRE(c[i].distance == 0);
+        break;
+      case CAS3::NEAREST_SURFACE_POINT:
+        ++nearest;
+        BOOST_REQUIRE(pts[i].z() > 0.75);
+        // the distance to the rim of the cut surface, about 1 - z's height
+        BOOST_REQUIRE(c[i].distance > 0);
+        BOOST_REQUIRE(std::abs(c[i].mean_curvature - 1) < 0.03);
+        BOOST_REQUIRE(std::abs(c[i].gaussian_curvature - 1) < 0.06);
+        // the normal of the nearest surface point: radial there, at an
+        // angle of about the distance from the point's own radial direction
+        BOOST_TEST_INFO("normal . radial " << c[i].normal * radial << ", H " << c[i].mean_curvature);
+        BOOST_REQUIRE(c[i].normal * radial > std::cos(c[i].distance) - 0.01);
+        BOOST_REQUIRE(std::abs(c[i].principal.max_direction * c[i].normal) < 1e-9);
+        break;
+      case CAS3::NO_VALUE:
+        ++none;
+        BOOST_REQUIRE(pts[i].z() > 0.8);
+        BOOST_REQUIRE(c[i].distance > 2 * spacing);  // far: at least a few spacings
+        BOOST_REQUIRE(std::isnan(c[i].mean_curvature));
+        break;
+    }
+  }
+  BOOST_TEST_MESSAGE("own vertex " << own << ", nearest surface point " << nearest << ", no value " << none);
+  BOOST_TEST(nearest > 50u);
+  BOOST_TEST(none > 50u);  // the cap's centre is about 12 spacings from its rim
+}
+
+// A radius in model units means the same on two samplings of one surface:
+// on a bumpy sphere sampled at 4000 and 16000 points, mean curvature with a
+// 0.25 radius agrees between the two; with 2-rings (half the radius on the
+// denser sampling) it does not.
+BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
+{
+  auto bumpy = [](std::size_t n) {
+    std::vector<Point> p = cas3_test::ellipsoid_sample<Point>(n, 1, 1, 1);
+    for(Point& x : p)
+    {
+      const double r = 1 + 0.03 * std::sin(8 * x.x()) * std::sin(8 * x.y()) * std::sin(8 * x.z());
+      x = CGAL::ORIGIN + r * (x - CGAL::ORIGIN);
+    }
+    return p;
+  };
+  const std::vector<Point> sparse = bumpy(4000), dense = bumpy(16000);
+  auto mean_curvatures = [](const std::vector<Point>& p, const CAS3::Neighborhood& n) {
+    const Analysis analysis(p.begin(), p.end());
+    Analysis::Surface surface;
+    analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+    std::vector<double> H;
+    for(const auto& c : analysis.estimate_curvatures(surface, n))
+      H.push_back(c.mean_curvature);
+    return H;
+  };
+  // the dense sample's point nearest to each sparse point (Fibonacci points:
+  // compare along the same z, by brute force over a window)
+  auto difference = [&](const CAS3::Neighborhood& n) {
+    const std::vector<double> Hs = mean_curvatures(sparse, n), Hd = mean_curvatures(dense, n);
+    std::vector<double> d;
+    for(std::size_t i = 0; i < sparse.size(); i += 10)
+    {
+      std::size_t best = 0;
+      double best_d = 1e300;
+      for(std::size_t j = 0; j < dense.size(); ++j)
+      {
+        const double dd = CGAL::squared_distance(sparse[i], dense[j]);
+        if(dd < best_d)
+        {
+          best_d = dd;
+          best = j;
+        }
+      }
+      d.push_back(std::abs(Hs[i] - Hd[best]));
+    }
+    return median(d);
+  };
+  const double by_radius = difference(CAS3::Neighborhood::radius(0.25));
+  const double by_rings = difference(CAS3::Neighborhood::rings(2));
+  BOOST_TEST_MESSAGE("median |H(4000) - H(16000)|: radius 0.25 " << by_radius << ", 2-rings " << by_rings);
+  BOOST_TEST(by_radius < 0.05);  // H is about 1, the bumps reach 1.9 at 2-rings
+  BOOST_TEST(by_radius < 0.5 * by_rings);
+}
+
+// The automatic neighbourhood grows with the noise, from the data alone.
+BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
+{
+  const double spacing = std::sqrt(4 * M_PI / 5000);
+  std::vector<double> radius;
+  for(double noise : {0.0, 0.1, 0.3})
+  {
+    const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(5000, 1, 1, 1, noise * spacing, 3);
+    const Analysis analysis(pts.begin(), pts.end());
+    Analysis::Surface surface;
+    analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+    std::vector<double> r;
+    for(const auto& c : analysis.estimate_curvatures(surface, CAS3::Neighborhood::automatic()))
+      if(std::isfinite(c.radius))
+        r.push_back(c.radius / spacing);
+    BOOST_TEST(r.size() > 4950u);
+    radius.push_back(median(r));
+  }
+  BOOST_TEST_MESSAGE("median automatic radius (spacings) at noise 0, 0.1, 0.3: " << radius[0] << " " << radius[1]
+                     << " " << radius[2]);
+  BOOST_TEST(radius[0] <= radius[1]);
+  BOOST_TEST(radius[1] <= radius[2]);
+  BOOST_TEST(radius[0] < radius[2]);
 }
