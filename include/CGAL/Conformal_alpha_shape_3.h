@@ -4,6 +4,14 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPE_3_H
 #define CGAL_CONFORMAL_ALPHA_SHAPE_3_H
 
+// Why this header is over 400 lines: it holds one class, whose members
+// (construction and range checks, values, classification, spectrum,
+// filtration) all read the values it stores in the triangulation's vertices
+// and cells, and half of it is the class's reference documentation. The
+// computations that stand alone are in internal/: poles (poles.h), the
+// local-scale policy and sample spacing (sample_spacing.h), the flood fill
+// (flood_fill.h).
+
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/flood_fill.h>
@@ -277,7 +285,12 @@ public:
   size_type number_of_input_points() const { return m_input_vertices.size(); }
 
   /// The vertex standing for input point `i`.
-  Vertex_handle input_vertex(size_type i) const { return m_input_vertices[i]; }
+  /// \pre `i < number_of_input_points()`.
+  Vertex_handle input_vertex(size_type i) const
+  {
+    CGAL_precondition(i < number_of_input_points());
+    return m_input_vertices[i];
+  }
 
   /// The indices of the input points that `v` stands for, increasing.
   Input_index_range input_indices(Vertex_handle v) const
@@ -315,7 +328,9 @@ public:
   /// @}
 
   /// \name Values
-  /// Conformal values of finite simplices; infinite ones get `+infinity`.
+  /// Conformal values of finite simplices; infinite ones get `+infinity`, and
+  /// so do the finite facets whose radius is beyond `double`'s range (far,
+  /// nearly collinear hull facets).
   /// @{
   FT conformal_alpha(Vertex_handle v) const
   { return this->is_infinite(v) ? infinity() : FT(0); }
@@ -339,8 +354,12 @@ public:
     const Cell_handle n = c->neighbor(i);
     if(c->encroaches_facet(i) || n->encroaches_facet(n->index(c)))
       return (std::min)(c->alpha(), n->alpha());
-    return std::sqrt(this->geom_traits().compute_squared_radius_3_object()(
+    const FT radius = std::sqrt(this->geom_traits().compute_squared_radius_3_object()(
       c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(), c->vertex((i + 3) & 3)->point()));
+    // a nearly collinear hull facet far out may have a radius beyond
+    // double's range: +infinity, or NaN (infinity times 0) made +infinity,
+    // so that every value stays ordered
+    return std::isnan(radius) ? infinity() : radius;
   }
   FT ordinary_alpha(const Edge& e) const
   { return edge_ordinary_alpha(e.first, e.first->vertex(e.second), e.first->vertex(e.third)); }
