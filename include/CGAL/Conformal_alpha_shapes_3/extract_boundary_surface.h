@@ -79,7 +79,6 @@ details each step and its measured effect.
 Faces and vertices are added to `pmesh`, which is usually empty. When `alpha`
 is below every facet value (or NaN), when the candidate facets enclose
 nothing, or when `cas` is empty, nothing is added and the report says so.
-At `alpha = +infinity` the surface is the convex hull.
 
 \tparam ConformalAlphaShape a `Conformal_alpha_shape_3`
 \tparam PolygonMesh a model of `MutableFaceGraph`
