@@ -4,8 +4,17 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPE_3_H
 #define CGAL_CONFORMAL_ALPHA_SHAPE_3_H
 
+// Why this header is over 400 lines: it holds one class, whose members
+// (construction and range checks, values, classification, spectrum,
+// filtration) all read the values it stores in the triangulation's vertices
+// and cells, and half of it is the class's reference documentation. The
+// computations that stand alone are in internal/: poles (poles.h), the
+// local-scale policy and sample spacing (sample_spacing.h), the flood fill
+// (flood_fill.h).
+
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/flood_fill.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/poles.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
@@ -43,12 +52,24 @@ enum Local_scale_estimator
   PAPER_POLE_DISTANCE,
   /// The distance to the pole, but at least 4 times the local sample
   /// spacing (the length of the vertex's 3rd shortest Delaunay edge: on a
-  /// surface, a vertex has at least 3 neighbours at about the spacing): a
+  /// surface, a vertex has at least 3 neighbors at about the spacing): a
   /// sample cannot resolve features much smaller than its spacing, and the
   /// collapsed pole distances of noisy points are exactly such features.
   /// Identical to `PAPER_POLE_DISTANCE` on dense noiseless samples. The default.
   NOISE_ROBUST_POLE_DISTANCE
 };
+
+namespace internal {
+
+// Whether T is a range rather than an iterator, to tell the two forms of
+// the named parameter `local_scales` apart.
+template <class T, class = void>
+struct Is_range : std::false_type {};
+template <class T>
+struct Is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>())),
+                               decltype(std::end(std::declval<const T&>()))> > : std::true_type {};
+
+} // namespace internal
 
 } // namespace Conformal_alpha_shapes_3
 
@@ -86,19 +107,19 @@ no longer be valid. Use `make_conformal_alpha_shape()` to rebuild. The class
 can be neither copied nor moved (as `Alpha_shape_3`): a copy of the
 triangulation would keep handles into the original.
 
-Range of the input: the values are computed in `double` from circumcentres,
+Range of the input: the values are computed in `double` from circumcenters,
 whose coordinates are quotients of fourth and third powers of coordinate
 differences. The construction therefore rejects, with `std::invalid_argument`,
 points whose coordinates exceed `1e75` in magnitude, point sets whose
 bounding box is larger than `1e75` or smaller than `1e-75` along its longest
-axis, and, as a last guard, any point set on which a circumcentre or a
+axis, and, as a last guard, any point set on which a circumcenter or a
 circumradius is not a finite positive `double`, or on which the determinant
-that the kernel divides by to construct a circumcentre or a facet radius is
+that the kernel divides by to construct a circumcenter or a facet radius is
 0 in `double` (a tetrahedron or triangle flat to rounding, far smaller than
 the bounding box, say: exact predicates accept it, inexact constructions
 cannot handle it). Such inputs crashed or gave empty surfaces
-before. Normalise such data first: the pipeline (see the manual, section on
-input rules) recentres and rescales the points, and flags isolated far
+before. Normalize such data first: the pipeline (see the manual, section on
+input rules) recenters and rescales the points, and flags isolated far
 outliers, before building this class.
 
 \tparam Dt a `Delaunay_triangulation_3` whose geometric traits class is a
@@ -140,8 +161,10 @@ public:
   /// \name Creation
   /// @{
 
-  /// An empty shape; fill it with `make_conformal_alpha_shape()`.
-  explicit Conformal_alpha_shape_3(FT alpha = FT(0)) : m_alpha(alpha) {}
+  /// An empty shape at scale `alpha` (see `set_alpha()`); fill it with
+  /// `make_conformal_alpha_shape()`.
+  /// \throws std::invalid_argument when `alpha` is negative or NaN.
+  explicit Conformal_alpha_shape_3(FT alpha = FT(0)) : m_alpha(alpha) { check_alpha(alpha); }
 
   // Neither copyable nor movable: vertices and cells hold handles, and the
   // input-vertex table points into this triangulation.
@@ -155,40 +178,37 @@ public:
   /// The smallest bounding-box extent (along the longest axis) accepted.
   static constexpr double min_extent() { return 1e-75; }
 
-  /// The shape of the points in `[first, last)`, local scales from poles
-  /// as `make_conformal_alpha_shape()` computes them.
+  /// The shape of the points in `[first, last)`, as
+  /// `make_conformal_alpha_shape(first, last, np)` builds it.
   /// \throws std::invalid_argument as `make_conformal_alpha_shape()`.
   template <class InputIterator, class NamedParameters = parameters::Default_named_parameters>
   Conformal_alpha_shape_3(InputIterator first, InputIterator last,
-                          const NamedParameters& np = parameters::default_values(),
-                          typename std::enable_if<Conformal_alpha_shapes_3::internal::
-                            Is_named_function_parameters<NamedParameters>::value>::type* = nullptr)
+                          const NamedParameters& np = parameters::default_values())
     : m_alpha(0)
   {
     make_conformal_alpha_shape(first, last, np);
   }
 
-  /// The shape of the points in `[first, last)` with caller-supplied local
-  /// scales, one per input point, read from `scales_first`.
-  template <class InputIterator, class ScaleIterator>
-  Conformal_alpha_shape_3(InputIterator first, InputIterator last, ScaleIterator scales_first,
-                          typename std::enable_if<!Conformal_alpha_shapes_3::internal::
-                            Is_named_function_parameters<ScaleIterator>::value>::type* = nullptr)
-    : m_alpha(0)
-  {
-    make_conformal_alpha_shape(first, last, scales_first);
-  }
-
   /*!
-  Clears the shape, then builds it for the points in `[first, last)` with
-  local scales from poles. Duplicate points collapse into one vertex that
-  remembers all their indices. Returns the number of input points.
+  Clears the shape, then builds it for the points in `[first, last)`.
+  Duplicate points collapse into one vertex that remembers all their
+  indices. Returns the number of input points. Poles are always computed;
+  the local scales come from them, or from the caller.
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{local_scale_estimator}
-      \cgalParamDescription{how the local scale of each vertex is computed}
+      \cgalParamDescription{how the local scale of each vertex is computed from the Voronoi diagram}
       \cgalParamType{`Conformal_alpha_shapes_3::Local_scale_estimator`}
       \cgalParamDefault{`Conformal_alpha_shapes_3::NOISE_ROBUST_POLE_DISTANCE`}
+      \cgalParamExtra{ignored when `local_scales` is given}
+    \cgalParamNEnd
+    \cgalParamNBegin{local_scales}
+      \cgalParamDescription{the caller's local scales, one per input point, in input order: the
+                             local scale of input point `i` is its `i`-th value; a vertex standing
+                             for duplicate points takes the smallest of their scales}
+      \cgalParamType{an input iterator to the first scale, or a range of the scales (then of the
+                      same size as `[first, last)`), with values convertible to `double`}
+      \cgalParamDefault{scales from the poles, as `local_scale_estimator` says}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
@@ -197,17 +217,20 @@ public:
   coordinate's magnitude exceeds `max_coordinate_magnitude()` (the message
   names the index), when the bounding box is longer than
   `max_coordinate_magnitude()` or shorter than `min_extent()` along its
-  longest axis, when a circumcentre or circumradius overflows or underflows
+  longest axis, when a circumcenter or circumradius overflows or underflows
   in `double`, or when the points do not span 3D (empty input, fewer than 4
   distinct points, all coplanar or collinear): the filtration needs a 3D
-  triangulation.
+  triangulation. With `local_scales`, also when a scale is not finite and
+  positive (the message names its index) or when the range of scales is not
+  as long as the input.
   */
   template <class InputIterator, class NamedParameters = parameters::Default_named_parameters>
   size_type make_conformal_alpha_shape(InputIterator first, InputIterator last,
-                                       const NamedParameters& np = parameters::default_values(),
-                                       typename std::enable_if<Conformal_alpha_shapes_3::internal::
-                                         Is_named_function_parameters<NamedParameters>::value>::type* = nullptr)
+                                       const NamedParameters& np = parameters::default_values())
   {
+    static_assert(Conformal_alpha_shapes_3::internal::Is_named_function_parameters<NamedParameters>::value,
+                  "the third argument is a pack of named parameters: pass one scale per point as "
+                  "Conformal_alpha_shapes_3::parameters::local_scales(scales_first)");
     using parameters::choose_parameter;
     using parameters::get_parameter;
     namespace CAS3 = Conformal_alpha_shapes_3;
@@ -219,10 +242,10 @@ public:
     if(!centers.empty() && this->number_of_vertices() == 0)
     {
       // store_cell_values() found a construction out of double's range
-      throw std::invalid_argument("Conformal_alpha_shape_3: a circumcentre or circumradius of the Delaunay "
+      throw std::invalid_argument("Conformal_alpha_shape_3: a circumcenter or circumradius of the Delaunay "
                                   "tetrahedra overflows or underflows in double, or divides by a "
                                   "determinant that is 0 in double (tetrahedra or triangles flat to "
-                                  "rounding, of very different sizes); normalise the coordinates and "
+                                  "rounding, of very different sizes); normalize the coordinates and "
                                   "remove far outliers");
     }
     const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, centers);
@@ -231,41 +254,16 @@ public:
       v->set_pole_cell(poles[v->vertex_index()].cell);
       v->set_local_scale(poles[v->vertex_index()].distance);
     }
-    if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
+    if constexpr(!parameters::is_default_parameter<NamedParameters,
+                                                   CAS3::internal_np_cas3::local_scales_t>::value)
     {
-      const std::vector<double> spacing = CAS3::internal::kth_shortest_edge_lengths<3>(*this);
-      for(Vertex_handle v : this->finite_vertex_handles())
-        v->set_local_scale((std::max)(v->local_scale(), 4 * spacing[v->vertex_index()]));
+      set_caller_scales(get_parameter(np, CAS3::internal_np_cas3::local_scales));
     }
-    return m_input_vertices.size();
-  }
-
-  /*!
-  As above, but the local scale of input point `i` is `*(scales_first + i)`.
-  A vertex standing for duplicate points takes the smallest of their scales.
-  Poles are computed all the same.
-  \throws std::invalid_argument also when a scale is not finite and positive.
-  */
-  template <class InputIterator, class ScaleIterator>
-  size_type make_conformal_alpha_shape(InputIterator first, InputIterator last, ScaleIterator scales_first,
-                                       typename std::enable_if<!Conformal_alpha_shapes_3::internal::
-                                         Is_named_function_parameters<ScaleIterator>::value>::type* = nullptr)
-  {
-    make_conformal_alpha_shape(first, last, Conformal_alpha_shapes_3::parameters::local_scale_estimator(
-                                              Conformal_alpha_shapes_3::PAPER_POLE_DISTANCE));
-    for(Vertex_handle v : this->finite_vertex_handles())
-      v->set_local_scale(std::numeric_limits<double>::infinity());
-    for(size_type i = 0; i < m_input_vertices.size(); ++i, ++scales_first)
+    else if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
     {
-      const double s = CGAL::to_double(*scales_first);
-      if(!(std::isfinite(s) && s > 0))
-      {
-        clear();
-        throw std::invalid_argument("Conformal_alpha_shape_3: local scale of input point "
-                                    + std::to_string(i) + " is not finite and positive");
-      }
-      Vertex_handle v = m_input_vertices[i];
-      v->set_local_scale((std::min)(v->local_scale(), s));
+      const std::vector<double> floors = CAS3::internal::local_scale_floors(*this);
+      for(Vertex_handle v : this->finite_vertex_handles())
+        v->set_local_scale((std::max)(v->local_scale(), floors[v->vertex_index()]));
     }
     return m_input_vertices.size();
   }
@@ -287,7 +285,12 @@ public:
   size_type number_of_input_points() const { return m_input_vertices.size(); }
 
   /// The vertex standing for input point `i`.
-  Vertex_handle input_vertex(size_type i) const { return m_input_vertices[i]; }
+  /// \pre `i < number_of_input_points()`.
+  Vertex_handle input_vertex(size_type i) const
+  {
+    CGAL_precondition(i < number_of_input_points());
+    return m_input_vertices[i];
+  }
 
   /// The indices of the input points that `v` stands for, increasing.
   Input_index_range input_indices(Vertex_handle v) const
@@ -302,7 +305,7 @@ public:
   /// \name Local scales
   /// @{
 
-  /// The pole of `v`: the Voronoi vertex (circumcentre of a finite cell)
+  /// The pole of `v`: the Voronoi vertex (circumcenter of a finite cell)
   /// farthest from `v` on the side opposite to `v`'s positive pole direction
   /// (the Amenta-Bern negative pole). On an unbounded Voronoi cell the
   /// positive direction is the mean outward normal of the incident convex hull
@@ -325,7 +328,9 @@ public:
   /// @}
 
   /// \name Values
-  /// Conformal values of finite simplices; infinite ones get `+infinity`.
+  /// Conformal values of finite simplices; infinite ones get `+infinity`, and
+  /// so do the finite facets whose radius is beyond `double`'s range (far,
+  /// nearly collinear hull facets).
   /// @{
   FT conformal_alpha(Vertex_handle v) const
   { return this->is_infinite(v) ? infinity() : FT(0); }
@@ -349,8 +354,12 @@ public:
     const Cell_handle n = c->neighbor(i);
     if(c->encroaches_facet(i) || n->encroaches_facet(n->index(c)))
       return (std::min)(c->alpha(), n->alpha());
-    return std::sqrt(this->geom_traits().compute_squared_radius_3_object()(
+    const FT radius = std::sqrt(this->geom_traits().compute_squared_radius_3_object()(
       c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(), c->vertex((i + 3) & 3)->point()));
+    // a nearly collinear hull facet far out may have a radius beyond
+    // double's range: +infinity, or NaN (infinity times 0) made +infinity,
+    // so that every value stays ordered
+    return std::isnan(radius) ? infinity() : radius;
   }
   FT ordinary_alpha(const Edge& e) const
   { return edge_ordinary_alpha(e.first, e.first->vertex(e.second), e.first->vertex(e.third)); }
@@ -358,9 +367,12 @@ public:
 
   /// \name Classification
   /// @{
+  /// Sets the scale used by the members without a scale argument; returns
+  /// the previous one.
+  /// \throws std::invalid_argument when `alpha` is negative or NaN.
   FT set_alpha(const FT& alpha)
   {
-    CGAL_precondition(alpha >= 0);
+    check_alpha(alpha);
     FT previous = m_alpha;
     m_alpha = alpha;
     return previous;
@@ -448,15 +460,20 @@ public:
   The paper's "q of the range of regular facet values": the values written by
   `boundary_facet_alphas()`, sorted increasingly, read at rank
   `round(q * (n - 1))`.
-  \pre `0 <= q <= 1` and `dimension() == 3`.
+  \throws std::invalid_argument when `q` is not in `[0, 1]` (NaN included),
+  or when the shape is empty (`dimension() < 3`).
   */
   FT alpha_at_quantile(double q) const
   {
-    CGAL_precondition(q >= 0 && q <= 1 && this->dimension() == 3);
+    if(!(q >= 0 && q <= 1))
+      throw std::invalid_argument("Conformal_alpha_shape_3::alpha_at_quantile: the quantile "
+                                  + std::to_string(q) + " is not in [0, 1]");
+    if(this->dimension() != 3)
+      throw std::invalid_argument("Conformal_alpha_shape_3::alpha_at_quantile: the shape is empty");
     std::vector<FT> values;
     values.reserve(this->number_of_finite_facets());
     boundary_facet_alphas(std::back_inserter(values));
-    CGAL_assertion(!values.empty());
+    CGAL_assertion(!values.empty());  // a 3D triangulation has hull facets
     const auto nth = values.begin() + static_cast<std::ptrdiff_t>(
                        std::floor(q * double(values.size() - 1) + 0.5));
     std::nth_element(values.begin(), nth, values.end());
@@ -557,7 +574,7 @@ public:
   size_type number_of_solid_components(const FT& alpha) const
   {
     std::vector<bool> seen(this->number_of_cells(), false);
-    std::vector<Cell_handle> stack;
+    std::vector<Cell_handle> work;
     size_type components = 0;
     for(Cell_handle c : this->finite_cell_handles())
     {
@@ -565,21 +582,19 @@ public:
         continue;
       ++components;
       seen[c->cell_index()] = true;
-      stack.push_back(c);
-      while(!stack.empty())
-      {
-        const Cell_handle d = stack.back();
-        stack.pop_back();
-        for(int i = 0; i < 4; ++i)
-        {
-          const Cell_handle n = d->neighbor(i);
-          if(!seen[n->cell_index()] && classify(n, alpha) == INTERIOR)
+      work.assign(1, c);
+      Conformal_alpha_shapes_3::internal::flood_fill(
+        work, Conformal_alpha_shapes_3::internal::Flood_order::depth_first, [&](Cell_handle d, auto&& reach) {
+          for(int i = 0; i < 4; ++i)
           {
-            seen[n->cell_index()] = true;
-            stack.push_back(n);
+            const Cell_handle n = d->neighbor(i);
+            if(!seen[n->cell_index()] && classify(n, alpha) == INTERIOR)
+            {
+              seen[n->cell_index()] = true;
+              reach(n);
+            }
           }
-        }
-      }
+        });
     }
     return components;
   }
@@ -598,6 +613,47 @@ private:
   };
 
   static FT infinity() { return std::numeric_limits<FT>::infinity(); }
+
+  static void check_alpha(const FT& alpha)
+  {
+    if(!(alpha >= 0))
+      throw std::invalid_argument("Conformal_alpha_shape_3: the scale alpha must be a number >= 0");
+  }
+
+  // The named parameter `local_scales`: a range, or an iterator to the first
+  // scale.
+  template <class Scales>
+  void set_caller_scales(const Scales& scales)
+  {
+    if constexpr(Conformal_alpha_shapes_3::internal::Is_range<Scales>::value)
+    {
+      if(size_type(std::distance(std::begin(scales), std::end(scales))) != m_input_vertices.size())
+      {
+        clear();
+        throw std::invalid_argument("Conformal_alpha_shape_3: the range of local scales is not as long as "
+                                    "the input");
+      }
+      set_caller_scales(std::begin(scales));
+    }
+    else
+    {
+      Scales it = scales;
+      for(Vertex_handle v : this->finite_vertex_handles())
+        v->set_local_scale(infinity());
+      for(size_type i = 0; i < m_input_vertices.size(); ++i, ++it)
+      {
+        const double s = CGAL::to_double(*it);
+        if(!(std::isfinite(s) && s > 0))
+        {
+          clear();
+          throw std::invalid_argument("Conformal_alpha_shape_3: local scale of input point "
+                                      + std::to_string(i) + " is not finite and positive");
+        }
+        Vertex_handle v = m_input_vertices[i];
+        v->set_local_scale((std::min)(v->local_scale(), s));
+      }
+    }
+  }
 
   Classification_type classify(const Critical_values& s, const FT& alpha) const
   {
@@ -738,7 +794,7 @@ private:
         if(std::abs(x) > max_coordinate_magnitude())
           throw std::invalid_argument("Conformal_alpha_shape_3: input point " + std::to_string(i)
                                       + " has a coordinate of magnitude above 1e75, out of the range in "
-                                        "which circumcentres can be computed in double; normalise the "
+                                        "which circumcenters can be computed in double; normalize the "
                                         "coordinates or remove the outlier");
         low[d] = (i == 0) ? x : (std::min)(low[d], x);
         high[d] = (i == 0) ? x : (std::max)(high[d], x);
@@ -746,10 +802,10 @@ private:
     const double extent = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
     if(!points.empty() && extent > max_coordinate_magnitude())
       throw std::invalid_argument("Conformal_alpha_shape_3: the bounding box of the input is longer than "
-                                  "1e75, out of the range in which circumcentres can be computed in double");
+                                  "1e75, out of the range in which circumcenters can be computed in double");
     if(extent > 0 && extent < min_extent())
       throw std::invalid_argument("Conformal_alpha_shape_3: the bounding box of the input is shorter than "
-                                  "1e-75, out of the range in which circumcentres can be computed in double; "
+                                  "1e-75, out of the range in which circumcenters can be computed in double; "
                                   "rescale the coordinates");
 
     std::vector<size_type> order(points.size());
@@ -793,16 +849,16 @@ private:
   }
 
   // One pass over the cells stores each cell's radius and which of its facets
-  // its vertices encroach, and returns the circumcentres (indexed by cell
+  // its vertices encroach, and returns the circumcenters (indexed by cell
   // index) for the poles. The vertex opposite to a facet lies strictly inside
   // the facet's smallest circumscribing ball exactly when the cell's
-  // circumcentre lies strictly beyond the facet's plane: the centres of the
+  // circumcenter lies strictly beyond the facet's plane: the centers of the
   // balls through the facet's circle lie on one line, and the opposite
-  // vertex's power changes sign with the centre's side. This is a filtered
+  // vertex's power changes sign with the center's side. This is a filtered
   // orientation test, much cheaper than Side_of_bounded_sphere_3.
-  // When a circumcentre or radius is not finite (or the radius is 0), the
+  // When a circumcenter or radius is not finite (or the radius is 0), the
   // later predicates would run on NaN or infinity: the shape is cleared and
-  // the centres computed so far are returned, for the caller to throw.
+  // the centers computed so far are returned, for the caller to throw.
   std::vector<Point> store_cell_values()
   {
     const Gt& gt = this->geom_traits();
@@ -851,13 +907,13 @@ private:
     return centers;
   }
 
-  // The kernel's circumcentre of a cell and squared radius of a facet divide
+  // The kernel's circumcenter of a cell and squared radius of a facet divide
   // by a determinant of coordinate differences, computed in double. A
   // tetrahedron or triangle flat to rounding (which the exact predicates may
   // still see as non-degenerate, e.g. at wildly different scales) makes it 0:
   // the construction is then undefined (NaN, or an assertion in debug
   // builds). The same determinants, computed the same way, tell beforehand:
-  // the circumcentre of (p, q, r, s) divides by det(q - p, r - p, s - p), the
+  // the circumcenter of (p, q, r, s) divides by det(q - p, r - p, s - p), the
   // squared radius of the facet (a, b, c) by det(a - c, b - c, (a - c) x (b - c)),
   // with the facet opposite to vertex i taken as (i + 1, i + 2, i + 3) as in
   // ordinary_alpha().

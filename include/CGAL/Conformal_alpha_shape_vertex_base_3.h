@@ -16,7 +16,7 @@ namespace CGAL {
 
 The vertex base of the triangulation underlying `Conformal_alpha_shape_3`.
 It stores what the filtration needs per vertex: the vertex's local scale
-`alpha_p+`, the cell whose circumcentre is the vertex's pole, and a dense
+`alpha_p+`, the cell whose circumcenter is the vertex's pole, and a dense
 vertex index used to address per-vertex arrays of the shape.
 
 \tparam Gt a geometric traits class, model of `DelaunayTriangulationTraits_3`.
@@ -51,7 +51,7 @@ public:
   double local_scale() const { return m_local_scale; }
   void set_local_scale(double s) { m_local_scale = s; }
 
-  /// the finite cell whose circumcentre is this vertex's pole
+  /// the finite cell whose circumcenter is this vertex's pole
   Cell_handle pole_cell() const { return m_pole_cell; }
   void set_pole_cell(Cell_handle c) { m_pole_cell = c; }
 

@@ -211,7 +211,7 @@ BOOST_AUTO_TEST_CASE(conformal_scales_succeed_where_every_global_alpha_fails)
   // every local scale 1: the ordinary alpha shape, swept over 400 quantiles
   // of its facet values and around the scale where the solid closes
   const std::vector<double> ones(pts.size(), 1.0);
-  const Cas global(pts.begin(), pts.end(), ones.begin());
+  const Cas global(pts.begin(), pts.end(), CAS3::parameters::local_scales(ones.begin()));
   std::vector<double> values;
   global.boundary_facet_alphas(std::back_inserter(values));
   std::sort(values.begin(), values.end());

@@ -189,7 +189,7 @@ struct Ring_buffers
 {
   std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> ring;
   std::vector<std::pair<double, typename boost::graph_traits<PolygonMesh>::vertex_descriptor> > ball;
-  std::vector<Neighbour> neighbours;
+  std::vector<Neighbor> neighbours;
 };
 
 // The estimate at one vertex, and the radius of the neighbourhood it used;
@@ -215,7 +215,7 @@ bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descri
     return false;
 
   const Vec3 p = to_vec3(get(vpm, v));
-  std::vector<Neighbour>& nbrs = buffers.neighbours;
+  std::vector<Neighbor>& nbrs = buffers.neighbours;
   auto add = [&](vertex_descriptor u) {
     const Vec3 offset = to_vec3(get(vpm, u)) - p;
     if(!(offset.squaredNorm() > 0))
@@ -228,7 +228,7 @@ bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descri
         return;
       kn = normal_curvature(offset, out.normal, n_u);
     }
-    nbrs.push_back(Neighbour{offset, kn});
+    nbrs.push_back(Neighbor{offset, kn});
   };
   auto fit = [&](Local_curvature& result, double* error) {
     bool ok = false;
@@ -398,7 +398,7 @@ Conventions: with outward-oriented faces, convex regions have positive
 curvature (a sphere of radius `r`: `H = 1/r`, `K = 1/r^2`); the curvatures
 are `max_curvature >= min_curvature`, `H` their mean and `K` their product.
 
-Neighbourhood, by the first of these named parameters given:
+Neighborhood, by the first of these named parameters given:
 - `neighborhood_radii`: per vertex, one of the candidate radii, chosen from
   the data alone by the intersection of confidence intervals rule: the fits
   run from the smallest radius up, each giving the mean curvature with a

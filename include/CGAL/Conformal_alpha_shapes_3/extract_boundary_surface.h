@@ -44,11 +44,7 @@ namespace internal {
 template <class Cas>
 std::size_t number_of_points_off_boundary(const Cas& cas, const Solid_labeling<Cas>& solid)
 {
-  std::vector<char> on(cas.number_of_vertices(), 0);
-  for(const typename Cas::Facet& f : solid.boundary())
-    for(int k = 1; k < 4; ++k)
-      on[f.first->vertex((f.second + k) & 3)->vertex_index()] = 1;
-  return number_of_points_off(cas, on);
+  return number_of_points_off(cas, solid.boundary_vertex_marks());
 }
 
 } // namespace internal
@@ -81,8 +77,8 @@ surface is missing (it is not bridged by a surface with border). The manual
 details each step and its measured effect.
 
 Faces and vertices are added to `pmesh`, which is usually empty. When `alpha`
-is below every facet value, or when the candidate facets enclose nothing,
-nothing is added and the report says so.
+is below every facet value (or NaN), when the candidate facets enclose
+nothing, or when `cas` is empty, nothing is added and the report says so.
 
 \tparam ConformalAlphaShape a `Conformal_alpha_shape_3`
 \tparam PolygonMesh a model of `MutableFaceGraph`
@@ -139,7 +135,6 @@ Boundary_surface_report extract_boundary_surface(const ConformalAlphaShape& cas,
   const internal::Solid_labeling<Cas> solid(cas, alpha);
   report.number_of_filled_cells = solid.number_of_filled_cells();
   report.number_of_carved_cells = solid.number_of_carved_cells();
-
   report.number_of_sculpted_cells = solid.number_of_sculpted_cells();
 
   // one mesh vertex per umbrella of faces around a vertex of the shape, at

@@ -21,6 +21,7 @@ enum ring_size_t { ring_size };
 enum estimator_t { estimator };
 enum vertex_input_index_map_t { vertex_input_index_map };
 enum local_scale_estimator_t { local_scale_estimator };
+enum local_scales_t { local_scales };
 enum minimum_fraction_on_surface_t { minimum_fraction_on_surface };
 enum scales_t { scales };
 enum reference_normals_t { reference_normals };
@@ -72,6 +73,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(ring_size)
 CGAL_CAS3_ADD_NAMED_PARAMETER(estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale_estimator)
+CGAL_CAS3_ADD_NAMED_PARAMETER(local_scales)
 CGAL_CAS3_ADD_NAMED_PARAMETER(minimum_fraction_on_surface)
 CGAL_CAS3_ADD_NAMED_PARAMETER(scales)
 CGAL_CAS3_ADD_NAMED_PARAMETER(reference_normals)

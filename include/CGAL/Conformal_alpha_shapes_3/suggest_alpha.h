@@ -5,6 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_SUGGEST_ALPHA_H
 
 #include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/flood_fill.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/solid_labeling.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
@@ -30,7 +31,7 @@ std::size_t number_of_points_on_largest_part(const Cas& cas, const Solid_labelin
   std::vector<int> part(cas.number_of_cells(), -1);
   std::vector<std::size_t> points;         // per part
   std::vector<std::size_t> stamp(cas.number_of_vertices(), std::size_t(-1));
-  std::vector<Cell_handle> stack;
+  std::vector<Cell_handle> work;
   for(const typename Cas::Facet& f : solid.boundary())
   {
     if(part[f.first->cell_index()] >= 0)
@@ -38,11 +39,9 @@ std::size_t number_of_points_on_largest_part(const Cas& cas, const Solid_labelin
     const int id = int(points.size());
     points.push_back(0);
     part[f.first->cell_index()] = id;
-    stack.assign(1, f.first);
-    while(!stack.empty())
-    {
-      const Cell_handle c = stack.back();
-      stack.pop_back();
+    work.assign(1, f.first);
+    // the count does not depend on the order
+    flood_fill(work, Flood_order::depth_first, [&](Cell_handle c, auto&& reach) {
       for(int i = 0; i < 4; ++i)
       {
         const Cell_handle n = c->neighbor(i);
@@ -51,7 +50,7 @@ std::size_t number_of_points_on_largest_part(const Cas& cas, const Solid_labelin
           if(part[n->cell_index()] < 0)
           {
             part[n->cell_index()] = id;
-            stack.push_back(n);
+            reach(n);
           }
           continue;
         }
@@ -65,7 +64,7 @@ std::size_t number_of_points_on_largest_part(const Cas& cas, const Solid_labelin
           }
         }
       }
-    }
+    });
   }
   return points.empty() ? 0 : *std::max_element(points.begin(), points.end());
 }
@@ -110,7 +109,8 @@ The paper's convention, a fixed quantile of the same values, is
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\throws std::invalid_argument when `cas` is empty (dimension below 3).
+\throws std::invalid_argument when `cas` is empty (dimension below 3), or
+when `f` is not in `[0, 1]` (NaN included).
 */
 template <class ConformalAlphaShape,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -122,6 +122,8 @@ double suggest_alpha(const ConformalAlphaShape& cas,
     CGAL::parameters::get_parameter(np, internal_np_cas3::minimum_fraction_on_surface), 0.9);
   if(cas.dimension() < 3)
     throw std::invalid_argument("suggest_alpha: the conformal alpha shape is empty");
+  if(!(minimum_fraction >= 0 && minimum_fraction <= 1))
+    throw std::invalid_argument("suggest_alpha: minimum_fraction_on_surface must be in [0, 1]");
 
   std::vector<double> values;
   cas.boundary_facet_alphas(std::back_inserter(values));

@@ -59,22 +59,24 @@ inline Local_curvature from_tangent_form(const Tangent_frame& f, double a, doubl
                          v_max(0) * f.e1 + v_max(1) * f.e2, v_min(0) * f.e1 + v_min(1) * f.e2};
 }
 
-// One neighbour seen from the centre vertex p: q - p, and the normal
+// One neighbor seen from the center vertex p: q - p, and the normal
 // curvature estimate along it.
-struct Neighbour
+struct Neighbor
 {
   Vec3 offset;
   double normal_curvature;
 };
+// The former spelling, still used by estimate_vertex_curvatures.h.
 
-// The normal curvature along q - p from the normal difference (METHOD 5,
-// eq. 3.15): <q - p, N_q - N_p> / |q - p|^2.
+// The normal curvature along q - p from the normal difference (the manual,
+// section "Curvature on a Triangle Mesh"; the paper's eq. 3.15):
+// <q - p, N_q - N_p> / |q - p|^2.
 inline double normal_curvature(const Vec3& offset, const Vec3& n_p, const Vec3& n_q)
 {
   return offset.dot(n_q - n_p) / offset.squaredNorm();
 }
 
-// Unit tangent direction of an offset (METHOD 5, eq. 3.6); false when the
+// Unit tangent direction of an offset (the paper's eq. 3.6); false when the
 // offset is along the normal.
 inline bool tangent_direction(const Vec3& offset, const Vec3& n, Vec3& t)
 {
@@ -86,9 +88,10 @@ inline bool tangent_direction(const Vec3& offset, const Vec3& n, Vec3& t)
   return true;
 }
 
-// The paper's Euler fit: e1 along the neighbour of largest normal curvature,
-// a fixed to that curvature, b and c by least squares (METHOD 5).
-inline bool paper_euler_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local_curvature& out)
+// The paper's Euler fit: e1 along the neighbor of largest normal curvature,
+// a fixed to that curvature, b and c by least squares (the manual, section
+// "Curvature on a Triangle Mesh", estimator `PAPER_EULER_FIT`).
+inline bool paper_euler_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_curvature& out)
 {
   std::size_t best = nbrs.size();
   for(std::size_t i = 0; i < nbrs.size(); ++i)
@@ -103,7 +106,7 @@ inline bool paper_euler_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, L
   const double a = nbrs[best].normal_curvature;
 
   double a11 = 0, a12 = 0, a22 = 0, a13 = 0, a23 = 0;
-  for(const Neighbour& q : nbrs)
+  for(const Neighbor& q : nbrs)
   {
     Vec3 t;
     if(!tangent_direction(q.offset, n, t))
@@ -127,14 +130,14 @@ inline bool paper_euler_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, L
 
 // Least-squares fit of all three Euler coefficients to the normal
 // curvatures: k_i ~ a cos^2 + b cos sin + c sin^2.
-inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbour>& nbrs,
+inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbor>& nbrs,
                                     Local_curvature& out)
 {
   const Tangent_frame f = frame_from_normal(n);
   Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
   std::size_t used = 0;
-  for(const Neighbour& q : nbrs)
+  for(const Neighbor& q : nbrs)
   {
     Vec3 t;
     if(!tangent_direction(q.offset, n, t))
@@ -157,22 +160,22 @@ inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbour>&
 
 // Least-squares fit of the height function
 //   z = A x^2 + B x y + C y^2 + D x + E y + F
-// to the vertex (at the origin) and its neighbours, in the frame of the normal
+// to the vertex (at the origin) and its neighbors, in the frame of the normal
 // n. The linear terms absorb the normal's error and the constant term the
 // vertex's own displacement (noise); the curvature is that of the graph at
 // the origin. Curvature is positive where the surface bends away from n.
 // When `mean_curvature_error` is given, it receives the standard error of
 // the mean curvature A + C implied by the fit's residuals (infinite when the
-// fit has no degrees of freedom left): what the automatic neighbourhood
-// weighs against the bias of larger neighbourhoods.
-inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local_curvature& out,
+// fit has no degrees of freedom left): what the automatic neighborhood
+// weighs against the bias of larger neighborhoods.
+inline bool quadric_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_curvature& out,
                         double* mean_curvature_error = nullptr)
 {
   if(nbrs.size() < 5)
     return false;
   const Tangent_frame f = frame_from_normal(n);
   double h = 0, reach = 0;
-  for(const Neighbour& q : nbrs)
+  for(const Neighbor& q : nbrs)
   {
     h += q.offset.norm();
     reach = (std::max)(reach, q.offset.norm());
@@ -183,12 +186,12 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local
   reach /= h;
 
   // weighted least squares by its normal equations, in fixed-size storage:
-  // the vertex itself (x = y = 0, z = 0) and each neighbour give a row
+  // the vertex itself (x = y = 0, z = 0) and each neighbor give a row
   typedef Eigen::Matrix<double, 6, 1> Vector6;
   Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
   Vector6 rhs = Vector6::Zero();
   normal_matrix(5, 5) = 1;
-  for(const Neighbour& q : nbrs)
+  for(const Neighbor& q : nbrs)
   {
     const Vec3 o = q.offset / h;  // unit-free coordinates condition the fit
     const double x = o.dot(f.e1), y = o.dot(f.e2);
@@ -208,7 +211,7 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbour>& nbrs, Local
   if(mean_curvature_error != nullptr)
   {
     double residuals = coef(5) * coef(5), weights = 1;  // the vertex's own row
-    for(const Neighbour& q : nbrs)
+    for(const Neighbor& q : nbrs)
     {
       const Vec3 o = q.offset / h;
       const double x = o.dot(f.e1), y = o.dot(f.e2);

@@ -12,7 +12,8 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
-// The pole of a vertex p and its distance, as in METHOD.md section 2.
+// The pole of a vertex p and its distance (the manual, section "Poles and
+// Local Scales").
 // `u` is p+ - p (p+ the farthest Voronoi vertex) on a bounded Voronoi cell
 // and the mean outward normal of the incident hull facets on an unbounded one.
 // The pole is the farthest Voronoi vertex on the side opposite to `u` (the
@@ -20,14 +21,14 @@ namespace internal {
 template <class Cell_handle>
 struct Pole
 {
-  Cell_handle cell;          // the cell whose circumcentre is the pole
+  Cell_handle cell;          // the cell whose circumcenter is the pole
   double      distance = 0;  // |p - pole|, the circumradius of that cell
 };
 
 // Computes the pole of every finite vertex, indexed by `v->vertex_index()`,
-// from the circumcentres of the finite cells (indexed by `c->cell_index()`).
+// from the circumcenters of the finite cells (indexed by `c->cell_index()`).
 // Precondition: dimension 3 and every finite cell's circumradius stored with
-// `set_alpha()`: the distance from a vertex to the circumcentre of an incident
+// `set_alpha()`: the distance from a vertex to the circumcenter of an incident
 // cell is that cell's circumradius.
 template <class Dt>
 std::vector<Pole<typename Dt::Cell_handle> >
