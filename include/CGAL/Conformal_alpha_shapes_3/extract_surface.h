@@ -139,10 +139,7 @@ Surface_report extract_surface(const ConformalAlphaShape& cas, double a, Polygon
   if(cas.dimension() < 3)
     return report;
 
-  const internal::Advancing_front_soup soup = internal::advancing_front_soup(cas, a);
-  const internal::Soup_parts parts = internal::soup_parts(soup);
-  const internal::Soup_sheets sheets = internal::soup_sheets(soup, parts);
-
+  internal::Advancing_front_soup soup = internal::advancing_front_soup(cas, a);
   std::vector<typename Cas::Vertex_handle> shape_vertex(cas.number_of_vertices());
   for(typename Cas::Vertex_handle v : cas.finite_vertex_handles())
     shape_vertex[v->vertex_index()] = v;
@@ -151,6 +148,10 @@ Surface_report extract_surface(const ConformalAlphaShape& cas, double a, Polygon
   auto reference = [&](std::size_t s) {
     return Vector(reference_normals[*cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin()]);
   };
+  if(has_reference)
+    internal::cut_at_reference_folds<Vector>(soup, point, reference);
+  const internal::Soup_parts parts = internal::soup_parts(soup);
+  const internal::Soup_sheets sheets = internal::soup_sheets(soup, parts);
   const std::vector<char> reverse = internal::parts_to_reverse<Vector>(soup, parts, sheets, point, reference, has_reference);
 
   report.number_of_parts = sheets.size();

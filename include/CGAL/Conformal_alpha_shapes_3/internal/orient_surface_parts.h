@@ -20,6 +20,95 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
+// With reference normals (a scanner's): cuts the soup where the side that
+// the reference normals ask for changes inside a part, as where the front
+// folded one sheet over both faces of a thin wall or over clutter seen from
+// two sides. Each triangle asks for the side most of its corners' reference
+// normals are on; the regions of triangles asking alike (a region smaller
+// than `smallest_region` triangles takes its neighbours' side, so that a few
+// grazing normals do not cut) become parts of their own: the links between
+// regions are removed and a vertex shared by regions gets one copy per
+// region. `point(s)` gives the position of soup vertex `s`, `reference(s)`
+// its reference normal.
+template <class Vector, class PointOf, class ReferenceOf>
+void cut_at_reference_folds(Advancing_front_soup& soup, const PointOf& point, const ReferenceOf& reference)
+{
+  const std::size_t smallest_region = 64;
+  const std::size_t n = soup.triangles.size(), none = Advancing_front_soup::no_neighbor;
+  std::vector<int> side(n, 0);
+  for(std::size_t t = 0; t < n; ++t)
+  {
+    const std::array<std::size_t, 3>& tri = soup.triangles[t];
+    const Vector area_normal = CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0]));
+    int votes = 0;
+    for(std::size_t s : tri)
+    {
+      const double d = CGAL::to_double(area_normal * reference(s));
+      votes += d > 0 ? 1 : (d < 0 ? -1 : 0);
+    }
+    side[t] = votes > 0 ? 1 : (votes < 0 ? -1 : 0);
+  }
+  // regions: triangles linked across edges where their sides do not conflict
+  std::vector<std::size_t> region(n);
+  auto label_regions = [&]() {
+    std::fill(region.begin(), region.end(), none);
+    std::vector<std::size_t> stack;
+    for(std::size_t seed = 0; seed < n; ++seed)
+    {
+      if(region[seed] != none)
+        continue;
+      region[seed] = seed;
+      stack.push_back(seed);
+      while(!stack.empty())
+      {
+        const std::size_t t = stack.back();
+        stack.pop_back();
+        for(std::size_t u : soup.neighbors[t])
+          if(u != none && region[u] == none && side[u] * side[t] >= 0 && side[u] * side[seed] >= 0)
+          {
+            region[u] = seed;
+            stack.push_back(u);
+          }
+      }
+    }
+  };
+  label_regions();
+  std::vector<std::size_t> size(n, 0);
+  for(std::size_t t = 0; t < n; ++t)
+    ++size[region[t]];
+  std::vector<int> neighbours_side(n, 0);
+  for(std::size_t t = 0; t < n; ++t)
+    if(size[region[t]] < smallest_region)
+      for(std::size_t u : soup.neighbors[t])
+        if(u != none && region[u] != region[t] && size[region[u]] >= smallest_region)
+          neighbours_side[region[t]] += side[u];
+  for(std::size_t t = 0; t < n; ++t)
+    if(size[region[t]] < smallest_region && neighbours_side[region[t]] != 0)
+      side[t] = neighbours_side[region[t]] > 0 ? 1 : -1;
+  label_regions();
+
+  // cut between regions
+  std::vector<std::size_t> owner(soup.shape_vertex.size(), none);
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> copy;  // (vertex, region) -> copy
+  for(std::size_t t = 0; t < n; ++t)
+  {
+    for(std::size_t& u : soup.neighbors[t])
+      if(u != none && region[u] != region[t])
+        u = none;
+    for(std::size_t& s : soup.triangles[t])
+    {
+      if(owner[s] == none)
+        owner[s] = region[t];
+      if(owner[s] == region[t])
+        continue;
+      const auto inserted = copy.emplace(std::make_pair(s, region[t]), soup.shape_vertex.size());
+      if(inserted.second)
+        soup.shape_vertex.push_back(soup.shape_vertex[s]);
+      s = inserted.first->second;
+    }
+  }
+}
+
 // The parts of a soup: the classes of triangles connected across edges.
 struct Soup_parts
 {
@@ -148,10 +237,11 @@ inline Soup_sheets soup_sheets(const Advancing_front_soup& soup, const Soup_part
   return sheets;
 }
 
-// Which parts to reverse so that each sheet faces the way the orientation
-// rule of the manual says ("Orientation"):
-// - with reference normals (a scanner's), each sheet agrees with the
-//   majority of the reference normals at its vertices;
+// Which parts to reverse so that each faces the way the orientation rule of
+// the manual says ("Orientation"):
+// - with reference normals (a scanner's), each part (cut at the folds, see
+//   `cut_at_reference_folds()`) agrees with the majority of the reference
+//   normals at its vertices;
 // - without, the cone that the sheet spans from the centre of the surface's
 //   vertices has positive volume: for a closed sheet that is the volume it
 //   encloses, wherever the centre, so it points outwards; an open sheet
@@ -164,7 +254,7 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
                                    const Soup_sheets& sheets, const PointOf& point,
                                    const ReferenceOf& reference, bool has_reference)
 {
-  std::vector<double> vote(sheets.size(), 0.0);
+  std::vector<double> vote(has_reference ? parts.size() : sheets.size(), 0.0);
   // the centre of the soup's vertices: the apex of the cones
   Vector centre(0, 0, 0);
   for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
@@ -180,22 +270,22 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
     const Vector p2 = point(tri[2]) - CGAL::ORIGIN - centre;
     const Vector area_normal = CGAL::cross_product(p1 - p0, p2 - p0);
     const std::size_t part = parts.part_of_triangle[t];
-    const std::size_t sheet = sheets.sheet_of_part[part];
-    const double sign = sheets.reverse_in_sheet[part] ? -1.0 : 1.0;
     if(has_reference)
     {
       for(std::size_t s : tri)
       {
         const double d = CGAL::to_double(area_normal * reference(s));
-        vote[sheet] += d > 0 ? sign : (d < 0 ? -sign : 0.0);
+        vote[part] += d > 0 ? 1.0 : (d < 0 ? -1.0 : 0.0);
       }
     }
     else
-      vote[sheet] += sign * CGAL::to_double(area_normal * p0);  // six times the signed cone volume
+      vote[sheets.sheet_of_part[part]] += (sheets.reverse_in_sheet[part] ? -1.0 : 1.0)
+                                          * CGAL::to_double(area_normal * p0);  // six times the signed cone volume
   }
   std::vector<char> reverse(parts.size(), 0);
   for(std::size_t p = 0; p < parts.size(); ++p)
-    reverse[p] = char((vote[sheets.sheet_of_part[p]] < 0 ? 1 : 0) ^ sheets.reverse_in_sheet[p]);
+    reverse[p] = has_reference ? char(vote[p] < 0 ? 1 : 0)
+                               : char((vote[sheets.sheet_of_part[p]] < 0 ? 1 : 0) ^ sheets.reverse_in_sheet[p]);
   return reverse;
 }
 
