@@ -17,7 +17,7 @@
 // sin(10z) in the direction (x, y, z)); the open surfaces ellipsoid_cap
 // (z > 0.1), torus_patch (a quarter: around angle and tube angle in
 // [0, pi], the top half of half the ring), bumpy_cap (z > 0.2), plane (the
-// square [-1, 1]^2); each at every size (--large adds 1M) and noise level
+// square [-1, 1]^2); the unit sphere; each at every size (--large adds 1M) and noise level
 // r: Gaussian noise along the true normal of standard deviation
 // r * spacing, spacing = sqrt(area / n). Then two clean 20k details:
 // fine_bumps (amplitude 0.005, frequency 40) and dent_bumps (the same bumps
@@ -452,6 +452,7 @@ std::vector<Shape> grid_shapes()
     {"bumpy_cap", false,
      [bumpy](std::size_t n) { return bumpy_sphere_truth_sample<Point, Vector>(n, bumpy, 0.2); }},
     {"plane", true, [](std::size_t n) { return square_truth_sample<Point, Vector>(n, 1); }},
+    {"sphere", false, [](std::size_t n) { return ellipsoid_truth_sample<Point, Vector>(n, 1, 1, 1); }},
   };
 }
 
