@@ -179,9 +179,20 @@ struct Neighborhood_rule
   std::vector<double> candidates;  // increasing; used when not empty
 };
 
-// How far the confidence intervals of the mean curvature may be apart, in
-// standard errors, before a larger neighbourhood is taken to be biased.
-constexpr double mean_curvature_interval_width = 2;
+// The automatic neighbourhood (see `estimate_at_vertex()`): the half-width
+// of the intervals of the mean curvature, in standard errors computed as if
+// the heights' errors were independent. Wide, because they are not: the
+// pipeline smooths noisy points (`denoise()`, jets of 24 to 64 neighbours)
+// before the surface is built, which leaves errors correlated over about
+// that many points (about 7 times the independent standard error) and hides
+// them from the residuals. Measured on the ellipsoid and torus at 20k points
+// with noise 0.1 spacing (evaluate_surfaces): with 2 the median radius is 4
+// spacings and the median H error 15% and 8% (best fixed radius: 4.2%,
+// 4.1%); 8 to 14 gives 5.2% to 5.6%; 25 and above grow too far. The cost:
+// clean bumps about 6 spacings wide read as noise and are smoothed away.
+constexpr double mean_curvature_interval_width = 10;
+// ... and how many of the smallest candidate radii measure the noise.
+constexpr std::size_t noise_measuring_radii = 4;
 
 // Buffers reused from vertex to vertex.
 template <typename PolygonMesh>
@@ -196,9 +207,10 @@ struct Ring_buffers
 // `normal_of(u)` gives a vertex's Chen-Wu normal.
 // A neighbourhood too small or too degenerate for the fit is widened (two
 // more rings, or the radius by 1.5 twice) before the vertex is given up
-// (NaN curvature). With candidate radii, the fits run from the smallest
-// radius up, and the largest radius is kept whose confidence interval of the
-// mean curvature still meets those of all smaller ones (the intersection of
+// (NaN curvature). With candidate radii, the vertex's noise is measured from
+// the residuals of the fits at the smallest radii, and the largest radius is
+// kept whose confidence interval of the mean curvature (that noise through
+// each fit) still meets those of all smaller ones (the intersection of
 // confidence intervals rule): beyond it the fit's bias outgrows its noise.
 template <typename PolygonMesh, typename VPM, typename Normal_of, typename Mark_factory>
 bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
@@ -230,7 +242,7 @@ bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descri
     }
     nbrs.push_back(Neighbor{offset, kn});
   };
-  auto fit = [&](Local_curvature& result, double* error) {
+  auto fit = [&](Local_curvature& result, Quadric_fit_error* error) {
     bool ok = false;
     switch(estimator)
     {
@@ -246,26 +258,65 @@ bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descri
   {
     collect_ball(v, pmesh, vpm, rule.candidates.back(), new_mark(), buffers.ball);
     nbrs.clear();
-    double low = -std::numeric_limits<double>::infinity(), high = -low;
+    // the fit at every candidate radius, smallest first
+    std::vector<Local_curvature> fits;
+    std::vector<Quadric_fit_error> errors;
+    std::vector<double> radii;
     std::size_t used = 0;
-    bool any = false;
     for(double r : rule.candidates)
     {
       for(; used < buffers.ball.size() && buffers.ball[used].first <= r; ++used)
         add(buffers.ball[used].second);
-      double error = 0;
+      Quadric_fit_error error;
       if(!fit(result, &error))
         continue;
-      const double H = (result.k1 + result.k2) / 2;
-      low = (std::max)(low, H - mean_curvature_interval_width * error);
-      high = (std::min)(high, H + mean_curvature_interval_width * error);
-      if(any && !(low <= high))
-        break;
-      out = result;
-      radius = r;
-      any = true;
+      fits.push_back(result);
+      errors.push_back(error);
+      radii.push_back(r);
     }
-    return any;
+    if(fits.empty())
+      return false;
+    // the noise of the heights: the residual variances of the fits at the
+    // smallest radii, s^2(r) = sigma^2 + beta r^6 (the noise, and the cubic
+    // terms that a quadric misses), fitted by least squares weighted by their
+    // inverse variances (degrees of freedom / s^4), sigma^2 kept between 0
+    // and the widest of these variances. Clean samples read about 0: their
+    // residuals grow as r^3.
+    const std::size_t measuring = (std::min)(fits.size(), noise_measuring_radii);
+    double s00 = 0, s01 = 0, s11 = 0, t0 = 0, t1 = 0;
+    for(std::size_t i = 0; i < measuring; ++i)
+    {
+      const Quadric_fit_error& e = errors[i];
+      if(!(e.degrees_of_freedom >= 1) || !std::isfinite(e.noise))
+        continue;
+      const double s2 = e.noise * e.noise;
+      const double x = std::pow(radii[i] / radii[0], 6);
+      const double w = e.degrees_of_freedom / (s2 * s2 + (std::numeric_limits<double>::min)());
+      s00 += w;
+      s01 += w * x;
+      s11 += w * x * x;
+      t0 += w * s2;
+      t1 += w * s2 * x;
+    }
+    const double det = s00 * s11 - s01 * s01;
+    const double widest = errors[measuring - 1].noise * errors[measuring - 1].noise;
+    double noise2 = det > 0 ? (t0 * s11 - t1 * s01) / det : widest;
+    noise2 = std::isfinite(widest) ? (std::min)((std::max)(noise2, 0.), widest) : (std::max)(noise2, 0.);
+    const double noise = std::sqrt(noise2);
+    // the intersection of confidence intervals, from the smallest radius up
+    double low = -std::numeric_limits<double>::infinity(), high = -low;
+    for(std::size_t i = 0; i < fits.size(); ++i)
+    {
+      const double H = (fits[i].k1 + fits[i].k2) / 2;
+      const double se = noise * errors[i].per_noise;
+      low = (std::max)(low, H - mean_curvature_interval_width * se);
+      high = (std::min)(high, H + mean_curvature_interval_width * se);
+      if(i > 0 && !(low <= high))
+        break;
+      out = fits[i];
+      radius = radii[i];
+    }
+    return true;
   }
 
   for(int widening = 0; widening <= 2; ++widening)
@@ -400,12 +451,17 @@ are `max_curvature >= min_curvature`, `H` their mean and `K` their product.
 
 Neighborhood, by the first of these named parameters given:
 - `neighborhood_radii`: per vertex, one of the candidate radii, chosen from
-  the data alone by the intersection of confidence intervals rule: the fits
-  run from the smallest radius up, each giving the mean curvature with a
-  standard error from its residuals; the largest radius is kept whose
-  interval (two standard errors either side) still meets the intervals of
-  all smaller radii. On clean fine detail this keeps small radii, under
-  noise it grows (see the manual's measurements). `QUADRIC_FIT` only.
+  the data alone by the intersection of confidence intervals rule. The
+  vertex's noise `sigma` is measured from the residual variances `s^2` of the
+  fits at the four smallest radii, by fitting `s^2(r) = sigma^2 + beta r^6`
+  (noise, plus the cubic terms a quadric misses; a clean sample reads about
+  0). Each fit gives the mean curvature with the standard error that noise
+  `sigma` on the heights implies (weighted least squares); the largest radius
+  is kept whose interval (ten such standard errors either side: they assume
+  independent errors, which smoothed noisy points do not have) still meets
+  the intervals of all smaller radii. On clean samples this keeps the
+  smallest radius, under noise it grows (see the manual's measurements).
+  `QUADRIC_FIT` only.
 - `neighborhood_radius`: the vertices within that distance of the vertex
   and connected to it through surface edges inside that ball (a ball cut to
   the vertex's side of the surface: a thin part or a nearby sheet does not

@@ -158,18 +158,28 @@ inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbor>& 
   return true;
 }
 
+// The uncertainty of a quadric fit's mean curvature, from its residuals.
+struct Quadric_fit_error
+{
+  double mean_curvature;      // standard error of H, the noise taken from this fit's residuals
+  double noise;               // standard deviation of the heights about the fit (model units)
+  double degrees_of_freedom;  // effective: weighted rows less what the fit absorbs
+  double per_noise;           // standard error of H per unit of noise: mean_curvature / noise
+};
+
 // Least-squares fit of the height function
 //   z = A x^2 + B x y + C y^2 + D x + E y + F
 // to the vertex (at the origin) and its neighbors, in the frame of the normal
 // n. The linear terms absorb the normal's error and the constant term the
 // vertex's own displacement (noise); the curvature is that of the graph at
 // the origin. Curvature is positive where the surface bends away from n.
-// When `mean_curvature_error` is given, it receives the standard error of
-// the mean curvature A + C implied by the fit's residuals (infinite when the
-// fit has no degrees of freedom left): what the automatic neighborhood
-// weighs against the bias of larger neighborhoods.
+// When `error` is given, it receives the uncertainty of the mean curvature
+// A + C for heights with independent noise of one standard deviation
+// (weighted least squares: the sandwich variance, and the residual variance
+// over the effective degrees of freedom; infinite with none left): what the
+// automatic neighborhood weighs against the bias of larger neighborhoods.
 inline bool quadric_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_curvature& out,
-                        double* mean_curvature_error = nullptr)
+                        Quadric_fit_error* error = nullptr)
 {
   if(nbrs.size() < 5)
     return false;
@@ -188,7 +198,8 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_
   // weighted least squares by its normal equations, in fixed-size storage:
   // the vertex itself (x = y = 0, z = 0) and each neighbor give a row
   typedef Eigen::Matrix<double, 6, 1> Vector6;
-  Eigen::Matrix<double, 6, 6> normal_matrix = Eigen::Matrix<double, 6, 6>::Zero();
+  typedef Eigen::Matrix<double, 6, 6> Matrix6;
+  Matrix6 normal_matrix = Matrix6::Zero();
   Vector6 rhs = Vector6::Zero();
   normal_matrix(5, 5) = 1;
   for(const Neighbor& q : nbrs)
@@ -202,15 +213,19 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_
     normal_matrix.noalias() += (w * w) * row * row.transpose();
     rhs.noalias() += (w * w * o.dot(f.n)) * row;
   }
-  const Eigen::LDLT<Eigen::Matrix<double, 6, 6> > ldlt(normal_matrix);
+  const Eigen::LDLT<Matrix6> ldlt(normal_matrix);
   const auto pivots = ldlt.vectorD();
   if(ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
     return false;
   const Vector6 coef = ldlt.solve(rhs);
   const double A = coef(0) / h, B = coef(1) / h, C = coef(2) / h, D = coef(3), E = coef(4);
-  if(mean_curvature_error != nullptr)
+  if(error != nullptr)
   {
+    // rows weighted by W: E[sum W r^2] = s^2 (sum W - tr(M^-1 M2)) and
+    // var(m' coef) = s^2 m' M^-1 M2 M^-1 m, M = X' W X, M2 = X' W^2 X
     double residuals = coef(5) * coef(5), weights = 1;  // the vertex's own row
+    Matrix6 squared_weights = Matrix6::Zero();
+    squared_weights(5, 5) = 1;
     for(const Neighbor& q : nbrs)
     {
       const Vec3 o = q.offset / h;
@@ -222,12 +237,18 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_
       const double r = o.dot(f.n) - row.dot(coef);
       residuals += w2 * r * r;
       weights += w2;
+      squared_weights.noalias() += (w2 * w2) * row * row.transpose();
     }
     Vector6 mean_row = Vector6::Zero();
     mean_row(0) = mean_row(2) = 1;
-    const double spread = mean_row.dot(ldlt.solve(mean_row));
-    *mean_curvature_error = weights > 6 ? std::sqrt(residuals / (weights - 6) * spread) / h
-                                        : std::numeric_limits<double>::infinity();
+    const Vector6 m = ldlt.solve(mean_row);
+    const double spread = m.dot(squared_weights * m);
+    const double dof = weights - ldlt.solve(squared_weights).trace();
+    const double variance = dof > 0.5 ? residuals / dof : std::numeric_limits<double>::infinity();
+    error->noise = std::sqrt(variance) * h;
+    error->degrees_of_freedom = dof;
+    error->per_noise = std::sqrt(spread) / (h * h);
+    error->mean_curvature = std::sqrt(variance * spread) / h;
   }
 
   // first and second fundamental forms of (x, y, z(x, y)) at the origin,
