@@ -623,6 +623,10 @@ BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
 }
 
 // The automatic neighbourhood grows with the noise, from the data alone.
+// Without denoising: the smoothing the pipeline applies by default leaves
+// errors correlated over its neighbourhood, which the residuals do not see
+// (measured: with it, 2, 11.3, 5.7 and 5.7 spacings at noise 0, 0.1, 0.3,
+// 0.5; see the manual).
 BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
 {
   const double spacing = std::sqrt(4 * M_PI / 5000);
@@ -630,7 +634,7 @@ BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
   for(double noise : {0.0, 0.1, 0.3})
   {
     const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(5000, 1, 1, 1, noise * spacing, 3);
-    const Analysis analysis(pts.begin(), pts.end());
+    const Analysis analysis(pts.begin(), pts.end(), CAS3::parameters::denoising(CAS3::NEVER_DENOISE));
     Analysis::Surface surface;
     analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
     std::vector<double> r;
