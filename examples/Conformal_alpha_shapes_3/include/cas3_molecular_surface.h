@@ -263,14 +263,7 @@ inline std::vector<Atom> parse_pdb(const std::string& text, const std::string& n
 // Reads the PDB file `path`. Throws Read_error.
 inline std::vector<Atom> read_pdb(const std::string& path, const Pdb_options& options = Pdb_options())
 {
-  std::ifstream in(path, std::ios::binary);
-  if(!in)
-    throw Read_error(path + ": cannot be opened for reading");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if(in.bad())
-    throw Read_error(path + ": read error");
-  return parse_pdb(bytes.str(), path, options);
+  return parse_pdb(read_detail::file_bytes(path), path, options);
 }
 
 // A point sample of a surface with outward unit normals; atom[i] is the atom

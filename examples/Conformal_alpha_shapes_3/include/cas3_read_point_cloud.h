@@ -50,6 +50,19 @@ struct Read_error : std::runtime_error
 
 namespace read_detail {
 
+// The whole content of the file `path`.
+inline std::string file_bytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw Read_error(path + ": cannot be opened for reading");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if(in.bad())
+    throw Read_error(path + ": read error");
+  return bytes.str();
+}
+
 // A token for a message: printable, at most 24 characters.
 inline std::string shown(const std::string& token)
 {
@@ -517,14 +530,7 @@ inline Point_cloud read_point_cloud(const std::string& path)
   if(extension != ".xyz" && extension != ".pwn" && extension != ".ply" && extension != ".off" && extension != ".obj")
     throw Read_error(path + ": unknown input extension '" + read_detail::shown(extension)
                      + "' (.xyz, .pwn, .ply, .off, .obj)");
-  std::ifstream in(path, std::ios::binary);
-  if(!in)
-    throw Read_error(path + ": cannot be opened for reading");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if(in.bad())
-    throw Read_error(path + ": read error");
-  return parse_point_cloud(bytes.str(), extension, path);
+  return parse_point_cloud(read_detail::file_bytes(path), extension, path);
 }
 
 } // namespace cas3

@@ -36,6 +36,24 @@
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 
+namespace internal {
+
+// The finite number that `text` spells, followed or not by `suffix`
+// (`has_suffix` says which); NaN when `text` is anything else.
+inline double number_with_suffix(const std::string& text, char suffix, bool& has_suffix)
+{
+  has_suffix = !text.empty() && text.back() == suffix;
+  const std::string number = has_suffix ? text.substr(0, text.size() - 1) : text;
+  std::size_t used = 0;
+  double value = std::numeric_limits<double>::quiet_NaN();
+  try { value = std::stod(number, &used); }
+  catch(const std::exception&) { used = 0; }
+  return number.empty() || used != number.size() || !std::isfinite(value)
+           ? std::numeric_limits<double>::quiet_NaN() : value;
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 A requested internal scale `a`: an absolute value, a quantile of the facet
@@ -59,13 +77,9 @@ public:
   {
     if(text == "auto")
       return automatic();
-    const bool percent = !text.empty() && text.back() == '%';
-    const std::string number = percent ? text.substr(0, text.size() - 1) : text;
-    std::size_t used = 0;
-    double value = std::numeric_limits<double>::quiet_NaN();
-    try { value = std::stod(number, &used); }
-    catch(const std::exception&) { used = 0; }
-    if(number.empty() || used != number.size() || !std::isfinite(value) || value < 0 || (percent && value > 100))
+    bool percent = false;
+    const double value = internal::number_with_suffix(text, '%', percent);
+    if(!(value >= 0) || (percent && value > 100))
       throw std::invalid_argument("not a scale: '" + text + "' (expected a value >= 0, a percentage or 'auto')");
     return percent ? quantile(value / 100) : absolute(value);
   }
@@ -121,13 +135,9 @@ public:
   {
     if(text == "auto")
       return automatic();
-    const bool in_spacings = !text.empty() && text.back() == 's';
-    const std::string number = in_spacings ? text.substr(0, text.size() - 1) : text;
-    std::size_t used = 0;
-    double value = std::numeric_limits<double>::quiet_NaN();
-    try { value = std::stod(number, &used); }
-    catch(const std::exception&) { used = 0; }
-    if(number.empty() || used != number.size() || !std::isfinite(value) || !(value > 0))
+    bool in_spacings = false;
+    const double value = internal::number_with_suffix(text, 's', in_spacings);
+    if(!(value > 0))
       throw std::invalid_argument("not a radius: '" + text + "' (expected a value > 0, a multiple of the "
                                   "spacing as 4s, or 'auto')");
     return in_spacings ? spacings(value) : radius(value);
