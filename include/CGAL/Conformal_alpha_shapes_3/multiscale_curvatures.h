@@ -456,16 +456,20 @@ private:
         c = record(SURFACE_VERTEX, 0, used_radius[v], normal[v], k1[v], k2[v], d1[v], d2[v]);
     }
 
-    // the others from the nearest point of the surface
+    // the others from the nearest point of the surface (usually few or none:
+    // the search structures are built only when some point needs them)
     typedef CGAL::AABB_face_graph_triangle_primitive<Surface> Primitive;
     typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
     Tree tree;
-    if(!CGAL::is_empty(surface))
+    const bool all_have_values = std::none_of(by_vertex.begin(), by_vertex.end(),
+      [](const Point_curvature<Kernel>& c) { return c.source == NO_VALUE; });
+    if(!all_have_values && !CGAL::is_empty(surface))
     {
       tree.insert(faces(surface).first, faces(surface).second, surface);
       tree.accelerate_distance_queries();
     }
-    const std::vector<double> spacing = internal::kth_shortest_edge_lengths<3>(m_shape);
+    const std::vector<double> spacing = tree.empty() ? std::vector<double>()
+                                                     : internal::kth_shortest_edge_lengths<3>(m_shape);
     for(typename Shape::Finite_vertices_iterator vit = m_shape.finite_vertices_begin();
         vit != m_shape.finite_vertices_end(); ++vit)
     {
