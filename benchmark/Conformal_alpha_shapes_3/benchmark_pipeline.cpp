@@ -1,0 +1,856 @@
+// The default job of the program conformal_curvature, stage by stage, against
+// the Delaunay build of the same points and CGAL jet fitting with 120
+// neighbours: wall and processor time, and peak resident memory from the
+// operating system (issue 12).
+//
+//   benchmark_pipeline [--sizes 100000,300000,1000000] [--surfaces noisy,clean]
+//                      [--csv FILE] [--time-limit SECONDS] [--jet-max N] [--no-jet]
+//                      [--no-split] [--no-bunny] [--program PATH] [--tmp DIR] [FILE...]
+//
+// Inputs: an ellipsoid with semi-axes 1, 0.7, 0.4 sampled uniformly in area
+// (cas3_analytic_surfaces.h), clean, and noisy (Gaussian noise of 0.1 x the
+// spacing along the true normal), at each size; then each FILE (default: the
+// bundled bunny), read with the program's reader.
+//
+// Each measured thing runs in a child process of its own (fork), so that its
+// peak memory is its own:
+//   delaunay   CGAL::Delaunay_triangulation_3<Epick> of the input points
+//   jet        CGAL::Monge_via_jet_fitting (jet degree 2, Monge degree 2) per
+//              point on its 120 nearest neighbours from a kd-tree
+//              (Orthogonal_k_neighbor_search), serial; inputs above --jet-max
+//              points (default 3000000) are skipped
+//   parts      the parts of the Multiscale_curvatures construction, called
+//              from outside the way its constructor calls them:
+//              estimate_noise, denoise (when the plan calls for it), and the
+//              Conformal_alpha_shape_3 of the (smoothed) points
+//   pipeline   the default job as conformal_curvature runs it: input hygiene
+//              (internal::normalize_input), Multiscale_curvatures
+//              construction, alpha(Scale::automatic()), extract_surface, for
+//              each of default_neighborhoods() estimate_curvatures (the fits
+//              and the nearest-surface filling) and the program's conversion
+//              of the layer to input units with its summary statistics, the
+//              surface PLY with the layers, and the binary PLY point cloud:
+//              the program's writer code copied here (reading an input file
+//              is not timed). With the split (default), after the job the
+//              curvature fits alone (estimate_vertex_curvatures on a copy of
+//              the surface, as estimate_curvatures calls it): the nearest-
+//              surface filling is the difference.
+//   program    (--program PATH) the conformal_curvature binary on the
+//              points written as .xyz, timed from outside (wall; processor
+//              time and peak memory from wait4); it also reads the text file.
+// Within a child, the peak of each stage comes from VmHWM after resetting it
+// (/proc/self/clear_refs 5) at the stage's start; "added" is that peak less
+// the resident memory when the child started (the input points). The job's
+// peak is the largest stage peak. Children are killed after --time-limit
+// seconds (default 900).
+#include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/Color.h>
+#include <CGAL/Monge_via_jet_fitting.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+
+#include "cas3_analytic_surfaces.h"
+#include "cas3_benchmark.h"
+#include "cas3_curvature_colors.h"
+#include "cas3_read_point_cloud.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <malloc.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+typedef CAS3::Multiscale_curvatures<K> Analysis;
+namespace fs = std::filesystem;
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// Options
+
+struct Options
+{
+  std::vector<std::size_t> sizes = {100000, 300000, 1000000};
+  std::vector<std::string> surfaces = {"noisy", "clean"};
+  std::vector<std::string> files;
+  std::string csv;
+  std::string program;
+  std::string tmp;
+  double time_limit = 900;
+  std::size_t jet_max = 3000000;
+  bool jet = true, split = true, bunny = true;
+};
+
+std::vector<std::string> split_list(const std::string& s)
+{
+  std::vector<std::string> items;
+  std::stringstream in(s);
+  std::string item;
+  while(std::getline(in, item, ','))
+    if(!item.empty()) items.push_back(item);
+  return items;
+}
+
+Options parse(int argc, char* argv[])
+{
+  Options o;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc) { std::cerr << arg << " needs a value\n"; std::exit(EXIT_FAILURE); }
+      return argv[++i];
+    };
+    if(arg == "--sizes")
+    {
+      o.sizes.clear();
+      for(const std::string& s : split_list(value())) o.sizes.push_back(std::stoul(s));
+    }
+    else if(arg == "--surfaces") o.surfaces = split_list(value());
+    else if(arg == "--csv") o.csv = value();
+    else if(arg == "--program") o.program = value();
+    else if(arg == "--tmp") o.tmp = value();
+    else if(arg == "--time-limit") o.time_limit = std::stod(value());
+    else if(arg == "--jet-max") o.jet_max = std::stoul(value());
+    else if(arg == "--no-jet") o.jet = false;
+    else if(arg == "--no-split") o.split = false;
+    else if(arg == "--no-bunny") o.bunny = false;
+    else if(arg == "--help" || arg == "-h")
+    {
+      std::cout << "benchmark_pipeline [--sizes N,N,...] [--surfaces noisy,clean] [--csv FILE]\n"
+                   "  [--time-limit SECONDS] [--jet-max N] [--no-jet] [--no-split] [--no-bunny]\n"
+                   "  [--program PATH] [--tmp DIR] [FILE...]\n";
+      std::exit(EXIT_SUCCESS);
+    }
+    else if(arg.rfind("--", 0) == 0) { std::cerr << "unknown option " << arg << "\n"; std::exit(EXIT_FAILURE); }
+    else o.files.push_back(arg);
+  }
+  if(o.files.empty() && o.bunny) o.files.push_back(CGAL_CAS3_DEFAULT_INPUT);
+  if(o.tmp.empty()) o.tmp = fs::temp_directory_path().string();
+  return o;
+}
+
+// ---------------------------------------------------------------------------
+// Measuring, in a child process: one line per stage on a pipe to the parent.
+
+double cpu_seconds()
+{
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double wall_seconds()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+struct Record
+{
+  std::string kind;   // delaunay, jet, parts, pipeline, program
+  std::string stage;
+  std::string group;  // reference, stage, part, extra, total, failure
+  double wall = NAN, cpu = NAN, peak_added = NAN, peak_process = NAN;  // s, s, MiB, MiB
+  std::string note;
+};
+
+class Child_meter
+{
+public:
+  Child_meter(int fd, const std::string& kind) : m_fd(fd), m_kind(kind)
+  {
+    m_base_kib = cas3_benchmark::kib_field("VmRSS");
+  }
+  // Runs f as one stage and reports it.
+  template <class F>
+  void stage(const std::string& name, const std::string& group, F f)
+  {
+    malloc_trim(0);
+    std::ofstream("/proc/self/clear_refs") << "5";
+    const double w0 = wall_seconds(), c0 = cpu_seconds();
+    std::string note = f();
+    const double wall = wall_seconds() - w0, cpu = cpu_seconds() - c0;
+    const double hwm = cas3_benchmark::kib_field("VmHWM");
+    m_max_hwm_kib = (std::max)(m_max_hwm_kib, hwm);
+    if(group == "stage")
+    {
+      m_sum_wall += wall;
+      m_sum_cpu += cpu;
+      m_stage_max_hwm_kib = (std::max)(m_stage_max_hwm_kib, hwm);
+    }
+    send(name, group, wall, cpu, (hwm - m_base_kib) / 1024, hwm / 1024, note);
+  }
+  // The sum of the "stage" stages, with their largest peak.
+  void total(const std::string& name)
+  {
+    send(name, "total", m_sum_wall, m_sum_cpu, (m_stage_max_hwm_kib - m_base_kib) / 1024, m_stage_max_hwm_kib / 1024,
+         "sum of the stages; peak: the largest stage peak");
+  }
+  void send(const std::string& name, const std::string& group, double wall, double cpu, double added,
+            double process, const std::string& note)
+  {
+    char line[1024];
+    const int n = std::snprintf(line, sizeof line, "%s\t%s\t%s\t%.6f\t%.6f\t%.3f\t%.3f\t%s\n", m_kind.c_str(),
+                                name.c_str(), group.c_str(), wall, cpu, added, process, note.c_str());
+    if(::write(m_fd, line, std::size_t((std::min)(n, int(sizeof line) - 1))) < 0) std::perror("write");
+  }
+
+private:
+  int m_fd;
+  std::string m_kind;
+  double m_base_kib = 0, m_max_hwm_kib = 0, m_stage_max_hwm_kib = 0;
+  double m_sum_wall = 0, m_sum_cpu = 0;
+};
+
+std::vector<Record> parse_records(const std::string& text)
+{
+  std::vector<Record> out;
+  std::stringstream in(text);
+  std::string line;
+  while(std::getline(in, line))
+  {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    std::string item;
+    while(std::getline(fields, item, '\t')) f.push_back(item);
+    if(f.size() < 7) continue;
+    Record r;
+    r.kind = f[0];
+    r.stage = f[1];
+    r.group = f[2];
+    r.wall = std::stod(f[3]);
+    r.cpu = std::stod(f[4]);
+    r.peak_added = std::stod(f[5]);
+    r.peak_process = std::stod(f[6]);
+    r.note = f.size() > 7 ? f[7] : "";
+    out.push_back(r);
+  }
+  return out;
+}
+
+// Runs body(meter) in a child with a time limit; the records it sent, and a
+// failure record when it did not end normally.
+std::vector<Record> in_child(const std::string& kind, double time_limit, const std::function<void(Child_meter&)>& body)
+{
+  std::fflush(stdout);
+  std::cout.flush();
+  int fds[2];
+  if(::pipe(fds) != 0) { std::perror("pipe"); std::exit(EXIT_FAILURE); }
+  const pid_t pid = ::fork();
+  if(pid == 0)
+  {
+    ::close(fds[0]);
+    ::alarm(unsigned(std::ceil(time_limit)));
+    int status = 0;
+    try
+    {
+      Child_meter meter(fds[1], kind);
+      body(meter);
+    }
+    catch(const std::exception& e)
+    {
+      Child_meter(fds[1], kind).send("exception", "failure", NAN, NAN, NAN, NAN, e.what());
+      status = 2;
+    }
+    ::close(fds[1]);
+    std::fflush(stdout);
+    ::_exit(status);
+  }
+  ::close(fds[1]);
+  std::string text;
+  char buffer[4096];
+  for(;;)
+  {
+    const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+    if(n < 0 && errno == EINTR) continue;
+    if(n <= 0) break;
+    text.append(buffer, std::size_t(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  rusage usage;
+  ::wait4(pid, &status, 0, &usage);
+  std::vector<Record> records = parse_records(text);
+  if(WIFSIGNALED(status))
+  {
+    Record r;
+    r.kind = kind;
+    r.stage = "not finished";
+    r.group = "failure";
+    r.note = WTERMSIG(status) == SIGALRM ? "killed at the time limit of " + std::to_string(int(time_limit)) + " s"
+                                         : "killed by signal " + std::to_string(WTERMSIG(status));
+    r.peak_process = double(usage.ru_maxrss) / 1024;
+    records.push_back(r);
+  }
+  return records;
+}
+
+// ---------------------------------------------------------------------------
+// From conformal_curvature.cpp, copied with the fewest changes: the layer
+// conversion, the summary statistics, the surface with the layers, the
+// binary PLY point cloud.
+
+struct Layer
+{
+  static constexpr int number_of_values = 15;
+  static const char* const* value_names()
+  {
+    static const char* const names[number_of_values] = {"nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y",
+                                                         "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
+    return names;
+  }
+  std::string label;
+  std::string description;
+  std::vector<float> values;
+  std::vector<std::uint8_t> source;
+
+  void set(std::size_t i, const CAS3::Point_curvature<K>& c)
+  {
+    const auto& p = c.principal;
+    const double v[number_of_values] = {c.normal.x(), c.normal.y(), c.normal.z(), c.mean_curvature,
+                                        c.gaussian_curvature, p.max_curvature, p.min_curvature,
+                                        p.max_direction.x(), p.max_direction.y(), p.max_direction.z(),
+                                        p.min_direction.x(), p.min_direction.y(), p.min_direction.z(),
+                                        c.radius, c.distance};
+    for(int j = 0; j < number_of_values; ++j)
+      values[i * number_of_values + std::size_t(j)] = float(v[j]);
+    source[i] = std::uint8_t(c.source);
+  }
+};
+
+template <class T>
+void put_little_endian(std::string& out, T x)
+{
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &x, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+void write_point_cloud(std::ostream& out, const std::vector<Point>& points, const std::vector<bool>& outlier,
+                       const std::vector<Layer>& layers)
+{
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\n"
+         << "comment conformal_curvature: values per input point, in input units\n"
+         << "comment source_L: 0 own surface vertex, 1 nearest surface point, 2 no value\n";
+  for(const Layer& layer : layers)
+    header << "comment layer " << layer.label << ": " << layer.description << "\n";
+  header << "element vertex " << points.size() << "\n"
+         << "property double x\nproperty double y\nproperty double z\nproperty uchar outlier\n";
+  for(const Layer& layer : layers)
+  {
+    for(int j = 0; j < Layer::number_of_values; ++j)
+      header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
+    header << "property uchar source_" << layer.label << "\n";
+  }
+  header << "end_header\n";
+  out << header.str();
+  std::string block;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    put_little_endian(block, points[i].x());
+    put_little_endian(block, points[i].y());
+    put_little_endian(block, points[i].z());
+    put_little_endian(block, std::uint8_t(outlier[i] ? 1 : 0));
+    for(const Layer& layer : layers)
+    {
+      for(int j = 0; j < Layer::number_of_values; ++j)
+        put_little_endian(block, layer.values[i * Layer::number_of_values + std::size_t(j)]);
+      put_little_endian(block, layer.source[i]);
+    }
+    if(block.size() > (1u << 20) || i + 1 == points.size())
+    {
+      out.write(block.data(), std::streamsize(block.size()));
+      block.clear();
+    }
+  }
+}
+
+std::vector<CAS3::Point_curvature<K> > to_input_units(const std::vector<CAS3::Point_curvature<K> >& kept,
+                                                      const CAS3::internal::Normalized_input<K>& input,
+                                                      std::size_t number_of_points)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  CAS3::Point_curvature<K> none;
+  none.normal = K::Vector_3(nan, nan, nan);
+  none.principal = CAS3::Principal_curvatures_and_directions<K>{nan, nan, none.normal, none.normal};
+  std::vector<CAS3::Point_curvature<K> > result(number_of_points, none);
+  for(std::size_t i = 0; i < kept.size(); ++i)
+  {
+    CAS3::Point_curvature<K> c = kept[i];
+    c.mean_curvature = input.curvature_to_input(c.mean_curvature);
+    c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
+    c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
+    c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
+    c.radius = input.length_to_input(c.radius);
+    c.distance = input.length_to_input(c.distance);
+    result[input.input_index[i]] = c;
+  }
+  return result;
+}
+
+Analysis::Surface surface_in_input_units(const Analysis::Surface& normalized,
+                                         const CAS3::internal::Normalized_input<K>& input,
+                                         const std::vector<Point>& points)
+{
+  Analysis::Surface surface = normalized;
+  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
+  for(auto v : surface.vertices())
+  {
+    index[v] = input.input_index[index[v]];
+    surface.point(v) = points[index[v]];
+  }
+  return surface;
+}
+
+void add_layer_to_surface(Analysis::Surface& surface, const Layer& layer)
+{
+  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
+  for(int j = 0; j < Layer::number_of_values; ++j)
+  {
+    auto map = surface.add_property_map<Analysis::Surface_vertex, float>(
+                        std::string("v:") + Layer::value_names()[j] + "_" + layer.label).first;
+    for(auto v : surface.vertices())
+      map[v] = layer.values[index[v] * Layer::number_of_values + std::size_t(j)];
+  }
+}
+
+std::string quantiles(std::vector<double> values)
+{
+  values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
+               values.end());
+  if(values.empty())
+    return "-";
+  std::sort(values.begin(), values.end());
+  char text[64];
+  auto at = [&](double q) { return values[std::size_t(q * double(values.size() - 1))]; };
+  std::snprintf(text, sizeof text, " %12.4g %12.4g %12.4g", at(0.05), at(0.5), at(0.95));
+  return text;
+}
+
+// ---------------------------------------------------------------------------
+// The measured things
+
+struct Input
+{
+  std::string name;
+  std::vector<Point> points;
+  std::vector<Vector> normals;  // a file's, else empty (the program's .xyz has none)
+};
+
+std::string number(double x, const char* format = "%.4g")
+{
+  char text[64];
+  std::snprintf(text, sizeof text, format, x);
+  return text;
+}
+
+void measure_delaunay(Child_meter& m, const Input& in)
+{
+  m.stage("Delaunay_triangulation_3<Epick>", "reference", [&] {
+    CGAL::Delaunay_triangulation_3<K> dt(in.points.begin(), in.points.end());
+    return std::to_string(dt.number_of_finite_cells()) + " finite cells";
+  });
+}
+
+void measure_jet(Child_meter& m, const Input& in)
+{
+  m.stage("jet fitting, 120 neighbours", "reference", [&] {
+    typedef CGAL::Search_traits_3<K> Traits;
+    typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+    typedef CGAL::Monge_via_jet_fitting<K> Fitting;
+    const Search::Tree tree(in.points.begin(), in.points.end());
+    std::vector<Point> neighbours;
+    neighbours.reserve(120);
+    double sum = 0;
+    for(const Point& p : in.points)
+    {
+      neighbours.clear();
+      const Search search(tree, p, 120);
+      for(auto it = search.begin(); it != search.end(); ++it) neighbours.push_back(it->first);
+      Fitting fitting;
+      const Fitting::Monge_form form = fitting(neighbours.begin(), neighbours.end(), 2, 2);
+      sum += form.principal_curvatures(0) + form.principal_curvatures(1);
+    }
+    return "Monge_via_jet_fitting(2, 2) per point, kd-tree k-NN; checksum " + number(sum);
+  });
+}
+
+void measure_parts(Child_meter& m, const Input& in)
+{
+  const CAS3::internal::Normalized_input<K> input = CAS3::internal::normalize_input<K>(in.points);
+  std::vector<Point> points(input.points.begin(), input.points.end());
+  CAS3::Noise_estimate noise;
+  m.stage("estimate_noise", "part", [&] {
+    noise = CAS3::estimate_noise(points);
+    return "noise " + number(noise.noise) + " x spacing, noise_24 " + number(noise.noise_24);
+  });
+  if(noise.calls_for_denoising())
+    m.stage("denoise", "part", [&] {
+      CAS3::Denoising_plan plan = CAS3::denoising_plan(noise.noise);
+      plan.passes = (std::max)(plan.passes, 1);
+      plan.neighbors = (std::max)(plan.neighbors, 24u);
+      CAS3::denoise(points, plan);
+      return std::to_string(plan.passes) + " pass(es) over " + std::to_string(plan.neighbors) + " neighbours";
+    });
+  else
+    m.send("denoise", "part", 0, 0, 0, 0, "not called for");
+  std::unique_ptr<Analysis::Shape> shape;
+  m.stage("Conformal_alpha_shape_3 construction", "part", [&] {
+    shape = std::make_unique<Analysis::Shape>();
+    shape->make_conformal_alpha_shape(points.begin(), points.end(),
+      CAS3::parameters::local_scale_estimator(CAS3::NOISE_ROBUST_POLE_DISTANCE));
+    return std::to_string(shape->number_of_finite_cells()) + " finite cells";
+  });
+  m.stage("Delaunay_triangulation_3<Epick> (same points, same process)", "part", [&] {
+    CGAL::Delaunay_triangulation_3<K> dt(points.begin(), points.end());
+    return std::to_string(dt.number_of_finite_cells()) + " finite cells";
+  });
+}
+
+void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, bool split)
+{
+  const std::vector<Point>& points = in.points;
+  const fs::path dir = fs::path(tmp) / ("benchmark_pipeline_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  CAS3::internal::Normalized_input<K> input;
+  std::unique_ptr<Analysis> analysis;
+  m.stage("input hygiene (normalize_input)", "stage", [&] {
+    input = CAS3::internal::normalize_input<K>(points);
+    return std::to_string(input.outliers.size()) + " outliers";
+  });
+  m.stage("Multiscale_curvatures construction", "stage", [&] {
+    std::vector<Vector> normals;
+    if(!in.normals.empty())
+      for(std::size_t i : input.input_index) normals.push_back(in.normals[i]);
+    const auto np = CAS3::parameters::reference_normals(std::cref(normals),
+      CAS3::parameters::denoising(CAS3::AUTOMATIC_DENOISING,
+                                  CAS3::parameters::surface_extraction(CAS3::ADVANCING_FRONT)));
+    analysis = std::make_unique<Analysis>(input.points.begin(), input.points.end(), np);
+    return "noise " + number(analysis->noise().noise) + ", " + std::to_string(analysis->denoising().passes)
+           + " smoothing pass(es)";
+  });
+  const CAS3::Scale scale = CAS3::Scale::automatic();
+  double a = 0;
+  m.stage("alpha(Scale::automatic())", "stage", [&] {
+    a = analysis->alpha(scale);
+    return "a = " + number(a);
+  });
+  Analysis::Surface surface;
+  m.stage("extract_surface", "stage", [&] {
+    const CAS3::Surface_report report = analysis->extract_surface(a, surface);
+    return std::to_string(report.number_of_faces) + " faces, " + std::to_string(report.number_of_parts)
+           + " parts, " + std::to_string(report.number_of_points_off_surface) + " points off";
+  });
+  Analysis::Surface written;
+  std::vector<Layer> layers;
+  const std::vector<CAS3::Neighborhood> neighborhoods = CAS3::default_neighborhoods();
+  m.stage("program: surface in input units", "stage", [&] {
+    written = surface_in_input_units(surface, input, points);
+    return std::string();
+  });
+  for(const CAS3::Neighborhood& neighborhood : neighborhoods)
+  {
+    const CAS3::Neighborhood normalized = neighborhood.kind() == CAS3::Neighborhood::RADIUS
+      ? CAS3::Neighborhood::radius(input.length_from_input(neighborhood.value())) : neighborhood;
+    std::vector<CAS3::Point_curvature<K> > kept;
+    m.stage("estimate_curvatures " + neighborhood.label(), "stage", [&] {
+      kept = analysis->estimate_curvatures(surface, normalized, CAS3::QUADRIC_FIT);
+      return std::string();
+    });
+    m.stage("program: layer " + neighborhood.label() + " (units, summary, surface properties)", "stage", [&] {
+      const std::vector<CAS3::Point_curvature<K> > curvatures = to_input_units(kept, input, points.size());
+      Layer layer;
+      layer.label = neighborhood.label();
+      layer.description = "a = " + number(a) + " (auto), " + neighborhood.label();
+      layer.values.resize(points.size() * Layer::number_of_values);
+      layer.source.resize(points.size());
+      std::size_t count[3] = {0, 0, 0};
+      std::vector<double> H, Kg, radius;
+      for(std::size_t i = 0; i < points.size(); ++i)
+      {
+        const CAS3::Point_curvature<K>& c = curvatures[i];
+        layer.set(i, c);
+        ++count[c.source];
+        H.push_back(c.mean_curvature);
+        Kg.push_back(c.gaussian_curvature);
+        if(std::isfinite(c.radius)) radius.push_back(c.radius);
+      }
+      add_layer_to_surface(written, layer);
+      if(!radius.empty())
+        std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
+      const std::string summary = quantiles(H) + quantiles(Kg);
+      layers.push_back(std::move(layer));
+      char note[160];
+      std::snprintf(note, sizeof note, "own vertex %.1f%%, nearest %.1f%%, none %.1f%%",
+                    100.0 * double(count[CAS3::SURFACE_VERTEX]) / double(points.size()),
+                    100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / double(points.size()),
+                    100.0 * double(count[CAS3::NO_VALUE]) / double(points.size()));
+      return std::string(note) + (summary.empty() ? " (no summary)" : "");
+    });
+  }
+  m.stage("write surface PLY (binary, 5 layers, colours)", "stage", [&] {
+    auto colour = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
+    cas3::colour_by_curvature(written,
+      written.property_map<Analysis::Surface_vertex, float>("v:H_" + layers.front().label).first, colour);
+    std::ofstream ply(dir / "surface_auto.ply", std::ios::binary);
+    CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
+    if(!CGAL::IO::write_PLY(ply, written) || !ply) throw std::runtime_error("cannot write the surface PLY");
+    ply.close();
+    return std::to_string(fs::file_size(dir / "surface_auto.ply") >> 20) + " MiB";
+  });
+  m.stage("write point cloud PLY (binary)", "stage", [&] {
+    std::ofstream ply(dir / "curvatures.ply", std::ios::binary);
+    write_point_cloud(ply, points, input.is_outlier, layers);
+    ply.close();
+    if(!ply) throw std::runtime_error("cannot write the point cloud PLY");
+    return std::to_string(fs::file_size(dir / "curvatures.ply") >> 20) + " MiB";
+  });
+  m.total("default job (sum of the stages)");
+  std::error_code ignored;
+  fs::remove_all(dir, ignored);
+  if(!split)
+    return;
+  // The curvature fits alone, as estimate_curvatures calls them, on a copy
+  // of the surface: estimate_curvatures less this is the nearest-surface
+  // filling (and the property copies).
+  for(const CAS3::Neighborhood& neighborhood : neighborhoods)
+  {
+    Analysis::Surface copy = surface;
+    m.stage("  of which the fits (estimate_vertex_curvatures) " + neighborhood.label(), "extra", [&] {
+      auto normal = copy.add_property_map<Analysis::Surface_vertex, Vector>("v:normal").first;
+      auto mean = copy.add_property_map<Analysis::Surface_vertex, double>("v:mean_curvature").first;
+      auto gaussian = copy.add_property_map<Analysis::Surface_vertex, double>("v:gaussian_curvature").first;
+      auto used_radius = copy.add_property_map<Analysis::Surface_vertex, double>("v:radius").first;
+      auto principal = get(CGAL::dynamic_vertex_property_t<CAS3::Principal_curvatures_and_directions<K> >(), copy);
+      auto outputs = CAS3::parameters::vertex_mean_curvature_map(mean,
+                     CAS3::parameters::vertex_Gaussian_curvature_map(gaussian,
+                     CAS3::parameters::vertex_principal_curvatures_and_directions_map(principal,
+                     CAS3::parameters::vertex_neighborhood_radius_map(used_radius,
+                       CAS3::parameters::estimator(CAS3::QUADRIC_FIT)))))
+                       .vertex_normal_map(normal);
+      switch(neighborhood.kind())
+      {
+        case CAS3::Neighborhood::RINGS:
+          CAS3::estimate_vertex_curvatures(copy, CAS3::parameters::ring_size(int(neighborhood.value()), outputs));
+          break;
+        case CAS3::Neighborhood::RADIUS:
+        case CAS3::Neighborhood::SPACINGS:
+          CAS3::estimate_vertex_curvatures(copy,
+            CAS3::parameters::neighborhood_radius(analysis->radius(neighborhood), outputs));
+          break;
+        case CAS3::Neighborhood::AUTOMATIC:
+        {
+          std::vector<double> radii = CAS3::Neighborhood::automatic_radii();
+          for(double& r : radii) r *= analysis->noise().spacing;
+          CAS3::estimate_vertex_curvatures(copy, CAS3::parameters::neighborhood_radii(radii, outputs));
+          break;
+        }
+      }
+      return std::string();
+    });
+  }
+}
+
+// The program binary on the points written as .xyz.
+std::vector<Record> measure_program(const std::string& program, const Input& in, const std::string& tmp,
+                                    double time_limit)
+{
+  const fs::path dir = fs::path(tmp) / ("benchmark_pipeline_program_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string xyz = (dir / "points.xyz").string();
+  {
+    std::string text;
+    for(const Point& p : in.points)
+    {
+      char line[96];
+      const int n = std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", p.x(), p.y(), p.z());
+      text.append(line, std::size_t(n));
+    }
+    std::ofstream(xyz) << text;
+  }
+  const std::string out = (dir / "out").string();
+  const double w0 = wall_seconds();
+  const pid_t pid = ::fork();
+  if(pid == 0)
+  {
+    ::alarm(unsigned(std::ceil(time_limit)));
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::execl(program.c_str(), program.c_str(), xyz.c_str(), "--output", out.c_str(), "--quiet", (char*)nullptr);
+    ::_exit(127);
+  }
+  int status = 0;
+  rusage usage;
+  ::wait4(pid, &status, 0, &usage);
+  Record r;
+  r.kind = "program";
+  r.stage = "conformal_curvature binary, default job (reads .xyz)";
+  r.group = "program";
+  r.wall = wall_seconds() - w0;
+  r.cpu = double(usage.ru_utime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec) + double(usage.ru_stime.tv_sec)
+          + 1e-6 * double(usage.ru_stime.tv_usec);
+  r.peak_process = double(usage.ru_maxrss) / 1024;
+  r.note = WIFEXITED(status) && WEXITSTATUS(status) == 0 ? "ru_maxrss of the process"
+         : "failed: status " + std::to_string(status);
+  if(!(WIFEXITED(status) && WEXITSTATUS(status) == 0)) r.group = "failure";
+  std::error_code ignored;
+  fs::remove_all(dir, ignored);
+  return {r};
+}
+
+// ---------------------------------------------------------------------------
+// Report
+
+std::string load_average()
+{
+  std::ifstream in("/proc/loadavg");
+  double one = 0;
+  in >> one;
+  return number(one, "%.2f");
+}
+
+std::string csv_field(const std::string& s)
+{
+  if(s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for(char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+void report(std::ofstream& csv, const std::string& input_name, std::size_t n,
+            const std::string& load_before, const std::vector<Record>& records)
+{
+  double dt_wall = NAN, dt_cpu = NAN, dt_peak = NAN;
+  for(const Record& r : records)
+    if(r.kind == "delaunay" && r.group == "reference")
+    {
+      dt_wall = r.wall;
+      dt_cpu = r.cpu;
+      dt_peak = r.peak_added;
+    }
+  const std::string load_after = load_average();
+  std::printf("\n== %s, %zu points (load average %s before, %s after)\n", input_name.c_str(), n,
+              load_before.c_str(), load_after.c_str());
+  std::printf("%-62s %9s %9s %7s %7s %9s %9s %6s %9s  %s\n", "stage", "wall s", "cpu s", "xDT wal", "xDT cpu",
+              "peak+ MiB", "proc MiB", "xDT", "us/point", "note");
+  for(const Record& r : records)
+  {
+    const bool timed = std::isfinite(r.wall);
+    const std::string name = (r.group == "part" ? "  part: " : "") + r.stage;
+    std::printf("%-62s %9s %9s %7s %7s %9s %9s %6s %9s  %s\n", name.substr(0, 62).c_str(),
+                timed ? number(r.wall, "%.3f").c_str() : "-", timed ? number(r.cpu, "%.3f").c_str() : "-",
+                timed ? number(r.wall / dt_wall, "%.2f").c_str() : "-",
+                timed ? number(r.cpu / dt_cpu, "%.2f").c_str() : "-",
+                std::isfinite(r.peak_added) ? number(r.peak_added, "%.1f").c_str() : "-",
+                std::isfinite(r.peak_process) ? number(r.peak_process, "%.1f").c_str() : "-",
+                std::isfinite(r.peak_added) ? number(r.peak_added / dt_peak, "%.2f").c_str() : "-",
+                timed ? number(1e6 * r.wall / double(n), "%.3f").c_str() : "-", r.note.c_str());
+    if(csv)
+      csv << csv_field(input_name) << ',' << n << ',' << r.kind << ',' << csv_field(r.stage) << ',' << r.group << ','
+          << number(r.wall, "%.6f") << ',' << number(r.cpu, "%.6f") << ','
+          << number(r.peak_added, "%.3f") << ',' << number(r.peak_process, "%.3f") << ','
+          << number(1e6 * r.wall / double(n), "%.4f") << ',' << number(1e6 * r.cpu / double(n), "%.4f") << ','
+          << number(r.wall / dt_wall, "%.4f") << ',' << number(r.cpu / dt_cpu, "%.4f") << ','
+          << number(r.peak_added / dt_peak, "%.4f") << ',' << load_before << ',' << load_after << ','
+          << csv_field(r.note) << '\n';
+  }
+  if(csv) csv.flush();
+  std::fflush(stdout);
+}
+
+void run(const Options& o, std::ofstream& csv, const Input& in)
+{
+  const std::string load_before = load_average();
+  std::vector<Record> records;
+  auto add = [&](const std::vector<Record>& more) { records.insert(records.end(), more.begin(), more.end()); };
+  add(in_child("delaunay", o.time_limit, [&](Child_meter& m) { measure_delaunay(m, in); }));
+  add(in_child("pipeline", o.time_limit, [&](Child_meter& m) { measure_pipeline(m, in, o.tmp, o.split); }));
+  add(in_child("parts", o.time_limit, [&](Child_meter& m) { measure_parts(m, in); }));
+  if(o.jet && in.points.size() <= o.jet_max)
+    add(in_child("jet", o.time_limit, [&](Child_meter& m) { measure_jet(m, in); }));
+  if(!o.program.empty())
+    add(measure_program(o.program, in, o.tmp, o.time_limit));
+  report(csv, in.name, in.points.size(), load_before, records);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const Options o = parse(argc, argv);
+  std::ofstream csv;
+  if(!o.csv.empty())
+  {
+    csv.open(o.csv);
+    csv << "input,n,process,stage,group,wall_s,cpu_s,peak_added_mib,peak_process_mib,wall_us_per_point,"
+           "cpu_us_per_point,wall_x_delaunay,cpu_x_delaunay,peak_added_x_delaunay,load_before,load_after,note\n";
+  }
+  std::printf("wall and processor (cpu) time in s; xDT: ratio to the Delaunay build alone of the same points\n"
+              "(wall to wall, cpu to cpu, peak to peak); peak+: the peak resident memory (VmHWM) of the stage\n"
+              "less the child process's resident memory at its start; proc: VmHWM of the process\n");
+  for(const std::string& kind : o.surfaces)
+    for(std::size_t n : o.sizes)
+    {
+      if(kind != "noisy" && kind != "clean")
+      {
+        std::cerr << "unknown surface " << kind << " (noisy, clean)\n";
+        return EXIT_FAILURE;
+      }
+      Input in;
+      auto sample = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(n, 1, 0.7, 0.4);
+      if(kind == "noisy")
+        cas3_analytic::add_normal_noise(sample, 0.1, 21);
+      in.name = "ellipsoid 1:0.7:0.4 " + (kind == "noisy" ? std::string("noise 0.1 spacing") : std::string("clean"));
+      in.points = std::move(sample.points);
+      run(o, csv, in);
+    }
+  for(const std::string& f : o.files)
+  {
+    Input in;
+    try
+    {
+      cas3::Point_cloud cloud = cas3::read_point_cloud(f);
+      in.points.assign(cloud.points.begin(), cloud.points.end());
+      in.normals.assign(cloud.normals.begin(), cloud.normals.end());
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << e.what() << "\n";
+      return EXIT_FAILURE;
+    }
+    in.name = f.substr(f.find_last_of('/') + 1);
+    run(o, csv, in);
+  }
+  return EXIT_SUCCESS;
+}
