@@ -495,8 +495,6 @@ BOOST_AUTO_TEST_CASE(noise_estimate)
 
 namespace {
 
-typedef CAS3::Multiscale_curvatures<K> Analysis;
-
 double median(std::vector<double> v)
 {
   BOOST_REQUIRE(!v.empty());
