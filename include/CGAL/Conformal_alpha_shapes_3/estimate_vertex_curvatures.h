@@ -4,6 +4,11 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_ESTIMATE_VERTEX_CURVATURES_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_ESTIMATE_VERTEX_CURVATURES_H
 
+// Over 400 lines: one public function (two overloads) with 150 lines of
+// documentation, and the per-vertex neighbourhoods it offers (rings, a ball
+// cut to the surface, the automatic choice among radii) with the fit that
+// runs on them; the fits themselves are in internal/curvature_fits.h.
+
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
