@@ -197,10 +197,9 @@ public:
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{local_scale_estimator}
-      \cgalParamDescription{how the local scale of each vertex is computed from the Voronoi diagram}
+      \cgalParamDescription{how the local scale of each vertex is computed from the Voronoi diagram (ignored when `local_scales` is given)}
       \cgalParamType{`Conformal_alpha_shapes_3::Local_scale_estimator`}
       \cgalParamDefault{`Conformal_alpha_shapes_3::NOISE_ROBUST_POLE_DISTANCE`}
-      \cgalParamExtra{ignored when `local_scales` is given}
     \cgalParamNEnd
     \cgalParamNBegin{local_scales}
       \cgalParamDescription{the caller's local scales, one per input point, in input order: the
