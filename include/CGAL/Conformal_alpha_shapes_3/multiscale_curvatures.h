@@ -297,8 +297,10 @@ private:
       tree.insert(faces(surface).first, faces(surface).second, surface);
       tree.accelerate_distance_queries();
     }
-    const std::vector<double> spacing = tree.empty() ? std::vector<double>()
-                                                     : internal::kth_shortest_edge_lengths<3>(m_shape);
+    // the local spacing of the local-scale rule
+    const std::vector<double> spacing =
+      tree.empty() ? std::vector<double>()
+                   : internal::kth_shortest_edge_lengths<internal::Local_scale_policy::spacing_edge_rank>(m_shape);
     for(typename Shape::Finite_vertices_iterator vit = m_shape.finite_vertices_begin();
         vit != m_shape.finite_vertices_end(); ++vit)
     {
