@@ -20,18 +20,18 @@
 //              (Orthogonal_k_neighbor_search), serial; inputs above --jet-max
 //              points (default 3000000) are skipped
 //   parts      the parts of the Multiscale_curvatures construction, called
-//              from outside the way its constructor calls them:
-//              estimate_noise, denoise (when the plan calls for it), and the
-//              Conformal_alpha_shape_3 of the (smoothed) points
-//   pipeline   the default job as conformal_curvature runs it: input hygiene
-//              (internal::normalize_input), Multiscale_curvatures
-//              construction, alpha(Scale::automatic()), extract_surface, for
-//              each of default_neighborhoods() estimate_curvatures (the fits
-//              and the nearest-surface filling) and the program's conversion
-//              of the layer to input units with its summary statistics, the
-//              surface PLY with the layers, and the binary PLY point cloud:
-//              the program's writer code copied here (reading an input file
-//              is not timed). With the split (default), after the job the
+//              from outside the way its constructor calls them: input
+//              hygiene (internal::normalize_input), estimate_noise, denoise
+//              (when the plan calls for it), and the Conformal_alpha_shape_3
+//              of the (smoothed) points
+//   pipeline   the default job as conformal_curvature runs it:
+//              Multiscale_curvatures construction, alpha(Scale::automatic()),
+//              extract_surface, for each of default_neighborhoods()
+//              estimate_curvatures (the fits and the nearest-surface
+//              filling) and the program's layer with its summary statistics,
+//              the surface PLY with the layers, and the binary PLY point
+//              cloud, through the program's writer (cas3_curvature_output.h;
+//              reading an input file is not timed). With the split (default), after the job the
 //              curvature fits alone (estimate_vertex_curvatures on a copy of
 //              the surface, as estimate_curvatures calls it): the nearest-
 //              surface filling is the difference.
@@ -57,6 +57,7 @@
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
 #include "cas3_curvature_colors.h"
+#include "cas3_curvature_output.h"
 #include "cas3_read_point_cloud.h"
 
 #include <algorithm>
@@ -320,144 +321,6 @@ std::vector<Record> in_child(const std::string& kind, double time_limit, const s
 // conversion, the summary statistics, the surface with the layers, the
 // binary PLY point cloud.
 
-struct Layer
-{
-  static constexpr int number_of_values = 15;
-  static const char* const* value_names()
-  {
-    static const char* const names[number_of_values] = {"nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y",
-                                                         "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
-    return names;
-  }
-  std::string label;
-  std::string description;
-  std::vector<float> values;
-  std::vector<std::uint8_t> source;
-
-  void set(std::size_t i, const CAS3::Point_curvature<K>& c)
-  {
-    const auto& p = c.principal;
-    const double v[number_of_values] = {c.normal.x(), c.normal.y(), c.normal.z(), c.mean_curvature,
-                                        c.gaussian_curvature, p.max_curvature, p.min_curvature,
-                                        p.max_direction.x(), p.max_direction.y(), p.max_direction.z(),
-                                        p.min_direction.x(), p.min_direction.y(), p.min_direction.z(),
-                                        c.radius, c.distance};
-    for(int j = 0; j < number_of_values; ++j)
-      values[i * number_of_values + std::size_t(j)] = float(v[j]);
-    source[i] = std::uint8_t(c.source);
-  }
-};
-
-template <class T>
-void put_little_endian(std::string& out, T x)
-{
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &x, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-
-void write_point_cloud(std::ostream& out, const std::vector<Point>& points, const std::vector<bool>& outlier,
-                       const std::vector<Layer>& layers)
-{
-  std::ostringstream header;
-  header << "ply\nformat binary_little_endian 1.0\n"
-         << "comment conformal_curvature: values per input point, in input units\n"
-         << "comment source_L: 0 own surface vertex, 1 nearest surface point, 2 no value\n";
-  for(const Layer& layer : layers)
-    header << "comment layer " << layer.label << ": " << layer.description << "\n";
-  header << "element vertex " << points.size() << "\n"
-         << "property double x\nproperty double y\nproperty double z\nproperty uchar outlier\n";
-  for(const Layer& layer : layers)
-  {
-    for(int j = 0; j < Layer::number_of_values; ++j)
-      header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
-    header << "property uchar source_" << layer.label << "\n";
-  }
-  header << "end_header\n";
-  out << header.str();
-  std::string block;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    put_little_endian(block, points[i].x());
-    put_little_endian(block, points[i].y());
-    put_little_endian(block, points[i].z());
-    put_little_endian(block, std::uint8_t(outlier[i] ? 1 : 0));
-    for(const Layer& layer : layers)
-    {
-      for(int j = 0; j < Layer::number_of_values; ++j)
-        put_little_endian(block, layer.values[i * Layer::number_of_values + std::size_t(j)]);
-      put_little_endian(block, layer.source[i]);
-    }
-    if(block.size() > (1u << 20) || i + 1 == points.size())
-    {
-      out.write(block.data(), std::streamsize(block.size()));
-      block.clear();
-    }
-  }
-}
-
-std::vector<CAS3::Point_curvature<K> > to_input_units(const std::vector<CAS3::Point_curvature<K> >& kept,
-                                                      const CAS3::internal::Normalized_input<K>& input,
-                                                      std::size_t number_of_points)
-{
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  CAS3::Point_curvature<K> none;
-  none.normal = K::Vector_3(nan, nan, nan);
-  none.principal = CAS3::Principal_curvatures_and_directions<K>{nan, nan, none.normal, none.normal};
-  std::vector<CAS3::Point_curvature<K> > result(number_of_points, none);
-  for(std::size_t i = 0; i < kept.size(); ++i)
-  {
-    CAS3::Point_curvature<K> c = kept[i];
-    c.mean_curvature = input.curvature_to_input(c.mean_curvature);
-    c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
-    c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
-    c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
-    c.radius = input.length_to_input(c.radius);
-    c.distance = input.length_to_input(c.distance);
-    result[input.input_index[i]] = c;
-  }
-  return result;
-}
-
-Analysis::Surface surface_in_input_units(const Analysis::Surface& normalized,
-                                         const CAS3::internal::Normalized_input<K>& input,
-                                         const std::vector<Point>& points)
-{
-  Analysis::Surface surface = normalized;
-  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
-  for(auto v : surface.vertices())
-  {
-    index[v] = input.input_index[index[v]];
-    surface.point(v) = points[index[v]];
-  }
-  return surface;
-}
-
-void add_layer_to_surface(Analysis::Surface& surface, const Layer& layer)
-{
-  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
-  for(int j = 0; j < Layer::number_of_values; ++j)
-  {
-    auto map = surface.add_property_map<Analysis::Surface_vertex, float>(
-                        std::string("v:") + Layer::value_names()[j] + "_" + layer.label).first;
-    for(auto v : surface.vertices())
-      map[v] = layer.values[index[v] * Layer::number_of_values + std::size_t(j)];
-  }
-}
-
-std::string quantiles(std::vector<double> values)
-{
-  values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
-               values.end());
-  if(values.empty())
-    return "-";
-  std::sort(values.begin(), values.end());
-  char text[64];
-  auto at = [&](double q) { return values[std::size_t(q * double(values.size() - 1))]; };
-  std::snprintf(text, sizeof text, " %12.4g %12.4g %12.4g", at(0.05), at(0.5), at(0.95));
-  return text;
-}
-
 // ---------------------------------------------------------------------------
 // The measured things
 
@@ -508,8 +371,12 @@ void measure_jet(Child_meter& m, const Input& in)
 
 void measure_parts(Child_meter& m, const Input& in)
 {
-  const CAS3::internal::Normalized_input<K> input = CAS3::internal::normalize_input<K>(in.points);
-  std::vector<Point> points(input.points.begin(), input.points.end());
+  std::vector<Point> points;
+  m.stage("input hygiene (internal::normalize_input)", "part", [&] {
+    CAS3::internal::Normalized_input<K> input = CAS3::internal::normalize_input<K>(in.points);
+    points = std::move(input.points);
+    return std::to_string(input.outliers.size()) + " outliers";
+  });
   CAS3::Noise_estimate noise;
   m.stage("estimate_noise", "part", [&] {
     noise = CAS3::estimate_noise(points);
@@ -543,22 +410,14 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, b
   const std::vector<Point>& points = in.points;
   const fs::path dir = fs::path(tmp) / ("benchmark_pipeline_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  CAS3::internal::Normalized_input<K> input;
   std::unique_ptr<Analysis> analysis;
-  m.stage("input hygiene (normalize_input)", "stage", [&] {
-    input = CAS3::internal::normalize_input<K>(points);
-    return std::to_string(input.outliers.size()) + " outliers";
-  });
-  m.stage("Multiscale_curvatures construction", "stage", [&] {
-    std::vector<Vector> normals;
-    if(!in.normals.empty())
-      for(std::size_t i : input.input_index) normals.push_back(in.normals[i]);
-    const auto np = CAS3::parameters::reference_normals(std::cref(normals),
+  m.stage("Multiscale_curvatures construction (input hygiene included)", "stage", [&] {
+    const auto np = CAS3::parameters::reference_normals(std::cref(in.normals),
       CAS3::parameters::denoising(CAS3::AUTOMATIC_DENOISING,
                                   CAS3::parameters::surface_extraction(CAS3::ADVANCING_FRONT)));
-    analysis = std::make_unique<Analysis>(input.points.begin(), input.points.end(), np);
+    analysis = std::make_unique<Analysis>(points.begin(), points.end(), np);
     return "noise " + number(analysis->noise().noise) + ", " + std::to_string(analysis->denoising().passes)
-           + " smoothing pass(es)";
+           + " smoothing pass(es), " + std::to_string(analysis->outliers().size()) + " outliers";
   });
   const CAS3::Scale scale = CAS3::Scale::automatic();
   double a = 0;
@@ -573,43 +432,36 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, b
            + " parts, " + std::to_string(report.number_of_points_off_surface) + " points off";
   });
   Analysis::Surface written;
-  std::vector<Layer> layers;
+  std::vector<cas3::Layer> layers;
   const std::vector<CAS3::Neighborhood> neighborhoods = CAS3::default_neighborhoods();
   m.stage("program: surface in input units", "stage", [&] {
-    written = surface_in_input_units(surface, input, points);
+    written = cas3::surface_at_input_points(surface, points);
     return std::string();
   });
   for(const CAS3::Neighborhood& neighborhood : neighborhoods)
   {
-    const CAS3::Neighborhood normalized = neighborhood.kind() == CAS3::Neighborhood::RADIUS
-      ? CAS3::Neighborhood::radius(input.length_from_input(neighborhood.value())) : neighborhood;
-    std::vector<CAS3::Point_curvature<K> > kept;
+    std::vector<CAS3::Point_curvature<K> > curvatures;
     m.stage("estimate_curvatures " + neighborhood.label(), "stage", [&] {
-      kept = analysis->estimate_curvatures(surface, normalized, CAS3::QUADRIC_FIT);
+      curvatures = analysis->estimate_curvatures(surface, neighborhood, CAS3::QUADRIC_FIT);
       return std::string();
     });
-    m.stage("program: layer " + neighborhood.label() + " (units, summary, surface properties)", "stage", [&] {
-      const std::vector<CAS3::Point_curvature<K> > curvatures = to_input_units(kept, input, points.size());
-      Layer layer;
+    m.stage("program: layer " + neighborhood.label() + " (summary, surface properties)", "stage", [&] {
+      cas3::Layer layer(curvatures);
       layer.label = neighborhood.label();
       layer.description = "a = " + number(a) + " (auto), " + neighborhood.label();
-      layer.values.resize(points.size() * Layer::number_of_values);
-      layer.source.resize(points.size());
       std::size_t count[3] = {0, 0, 0};
       std::vector<double> H, Kg, radius;
-      for(std::size_t i = 0; i < points.size(); ++i)
+      for(const CAS3::Point_curvature<K>& c : curvatures)
       {
-        const CAS3::Point_curvature<K>& c = curvatures[i];
-        layer.set(i, c);
         ++count[c.source];
         H.push_back(c.mean_curvature);
         Kg.push_back(c.gaussian_curvature);
         if(std::isfinite(c.radius)) radius.push_back(c.radius);
       }
-      add_layer_to_surface(written, layer);
+      cas3::add_layer_to_surface(written, layer);
       if(!radius.empty())
         std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
-      const std::string summary = quantiles(H) + quantiles(Kg);
+      const std::string summary = cas3::quantiles(H) + cas3::quantiles(Kg);
       layers.push_back(std::move(layer));
       char note[160];
       std::snprintf(note, sizeof note, "own vertex %.1f%%, nearest %.1f%%, none %.1f%%",
@@ -631,7 +483,9 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, b
   });
   m.stage("write point cloud PLY (binary)", "stage", [&] {
     std::ofstream ply(dir / "curvatures.ply", std::ios::binary);
-    write_point_cloud(ply, points, input.is_outlier, layers);
+    std::vector<bool> is_outlier(points.size(), false);
+    for(std::size_t i : analysis->outliers()) is_outlier[i] = true;
+    cas3::write_point_cloud(ply, points, is_outlier, layers);
     ply.close();
     if(!ply) throw std::runtime_error("cannot write the point cloud PLY");
     return std::to_string(fs::file_size(dir / "curvatures.ply") >> 20) + " MiB";

@@ -4,7 +4,6 @@
 // neighbourhood, one binary PLY surface per scale with the same values per
 // vertex, and on request a CSV with a row per input point per layer; prints
 // a summary table on stdout.
-#include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,6 +11,7 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
 #include "cas3_curvature_colors.h"
+#include "cas3_curvature_output.h"
 #include "cas3_read_point_cloud.h"
 
 #include <algorithm>
@@ -223,89 +223,6 @@ void append(std::string& out, double x)
   out.append(buffer, r.ptr);
 }
 
-// The values of one layer (a scale and a neighbourhood) per input point, in
-// input units, as the point cloud file stores them.
-struct Layer
-{
-  static constexpr int number_of_values = 15;
-  static const char* const* value_names()
-  {
-    static const char* const names[number_of_values] = {"nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y",
-                                                         "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
-    return names;
-  }
-  std::string label;       // the property suffix: [scale_]neighbourhood
-  std::string description; // for the file header
-  std::vector<float> values;        // number_of_values per point
-  std::vector<std::uint8_t> source; // CAS3::Point_source per point
-
-  void set(std::size_t i, const CAS3::Point_curvature<K>& c)
-  {
-    const auto& p = c.principal;
-    const double v[number_of_values] = {c.normal.x(), c.normal.y(), c.normal.z(), c.mean_curvature,
-                                        c.gaussian_curvature, p.max_curvature, p.min_curvature,
-                                        p.max_direction.x(), p.max_direction.y(), p.max_direction.z(),
-                                        p.min_direction.x(), p.min_direction.y(), p.min_direction.z(),
-                                        c.radius, c.distance};
-    for(int j = 0; j < number_of_values; ++j)
-      values[i * number_of_values + std::size_t(j)] = float(v[j]);
-    source[i] = std::uint8_t(c.source);
-  }
-};
-
-template <class T>
-void put_little_endian(std::string& out, T x)
-{
-  static_assert(std::is_arithmetic<T>::value, "a number");
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &x, sizeof(T));
-  // this program's platforms are little-endian; the header says so
-  out.append(bytes, sizeof(T));
-}
-
-// The point cloud: binary little-endian PLY, double positions, float
-// values, uchar flags; a comment line per layer says what it is.
-void write_point_cloud(std::ostream& out, const std::vector<Point>& points, const std::vector<bool>& outlier,
-                       const std::vector<Layer>& layers)
-{
-  std::ostringstream header;
-  header << "ply\nformat binary_little_endian 1.0\n"
-         << "comment conformal_curvature: values per input point, in input units\n"
-         << "comment source_L: 0 own surface vertex, 1 nearest surface point, 2 no value\n";
-  for(const Layer& layer : layers)
-    header << "comment layer " << layer.label << ": " << layer.description << "\n";
-  header << "element vertex " << points.size() << "\n"
-         << "property double x\nproperty double y\nproperty double z\nproperty uchar outlier\n";
-  for(const Layer& layer : layers)
-  {
-    for(int j = 0; j < Layer::number_of_values; ++j)
-      header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
-    header << "property uchar source_" << layer.label << "\n";
-  }
-  header << "end_header\n";
-  out << header.str();
-  std::string block;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    put_little_endian(block, points[i].x());
-    put_little_endian(block, points[i].y());
-    put_little_endian(block, points[i].z());
-    put_little_endian(block, std::uint8_t(outlier[i] ? 1 : 0));
-    for(const Layer& layer : layers)
-    {
-      for(int j = 0; j < Layer::number_of_values; ++j)
-        put_little_endian(block, layer.values[i * Layer::number_of_values + std::size_t(j)]);
-      put_little_endian(block, layer.source[i]);
-    }
-    if(block.size() > (1u << 20) || i + 1 == points.size())
-    {
-      out.write(block.data(), std::streamsize(block.size()));
-      block.clear();
-    }
-  }
-}
-
-
 const char* const csv_header =
   "point_index,x,y,z,a,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,outlier,"
   "neighborhood,radius,source,distance\n";
@@ -344,74 +261,6 @@ void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double
     line += '\n';
     csv << line;
   }
-}
-
-// Curvatures of the kept (normalised) points, back per input point in input
-// units; outliers have no value.
-std::vector<CAS3::Point_curvature<K> > to_input_units(const std::vector<CAS3::Point_curvature<K> >& kept,
-                                                      const CAS3::internal::Normalized_input<K>& input,
-                                                      std::size_t number_of_points)
-{
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  CAS3::Point_curvature<K> none;
-  none.normal = K::Vector_3(nan, nan, nan);
-  none.principal = CAS3::Principal_curvatures_and_directions<K>{nan, nan, none.normal, none.normal};
-  std::vector<CAS3::Point_curvature<K> > result(number_of_points, none);
-  for(std::size_t i = 0; i < kept.size(); ++i)
-  {
-    CAS3::Point_curvature<K> c = kept[i];
-    c.mean_curvature = input.curvature_to_input(c.mean_curvature);
-    c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
-    c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
-    c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
-    c.radius = input.length_to_input(c.radius);
-    c.distance = input.length_to_input(c.distance);
-    result[input.input_index[i]] = c;
-  }
-  return result;
-}
-
-// A copy of the surface's faces with its vertices at their input points and
-// "v:input_index" the index in the input file; layers add their values.
-Analysis::Surface surface_in_input_units(const Analysis::Surface& normalized,
-                                         const CAS3::internal::Normalized_input<K>& input,
-                                         const std::vector<Point>& points)
-{
-  Analysis::Surface surface = normalized;
-  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
-  for(auto v : surface.vertices())
-  {
-    index[v] = input.input_index[index[v]];
-    surface.point(v) = points[index[v]];
-  }
-  return surface;
-}
-
-// Adds the values of a layer, from the curvatures per input point, as float
-// vertex properties "v:<value>_<label>" of the written surface.
-void add_layer_to_surface(Analysis::Surface& surface, const Layer& layer)
-{
-  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
-  for(int j = 0; j < Layer::number_of_values; ++j)
-  {
-    auto map = surface.add_property_map<Analysis::Surface_vertex, float>(
-                        std::string("v:") + Layer::value_names()[j] + "_" + layer.label).first;
-    for(auto v : surface.vertices())
-      map[v] = layer.values[index[v] * Layer::number_of_values + std::size_t(j)];
-  }
-}
-
-std::string quantiles(std::vector<double> values)
-{
-  values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
-               values.end());
-  if(values.empty())
-    return "            -            -            -";
-  std::sort(values.begin(), values.end());
-  char text[64];
-  auto at = [&](double q) { return values[std::size_t(q * double(values.size() - 1))]; };
-  std::snprintf(text, sizeof text, " %12.4g %12.4g %12.4g", at(0.05), at(0.5), at(0.95));
-  return text;
 }
 
 // Files are written into a private temporary directory and moved into the
@@ -573,27 +422,25 @@ int run(const Options& o)
   const cas3::Point_cloud cloud = cas3::read_point_cloud(o.input);
   const std::vector<Point>& points = cloud.points;
   progress("read " + std::to_string(points.size()) + " points");
-  // recentred, rescaled, isolated far outliers removed (see the manual)
-  CAS3::internal::Normalized_input<K> input;
+  // the library recentres, rescales and leaves isolated far outliers out
+  // (see the manual, section "Input Rules")
   std::unique_ptr<Analysis> analysis;
   try
   {
-    input = CAS3::internal::normalize_input<K>(cloud.points);
-    // the given normals of the kept points, if any
-    std::vector<K::Vector_3> normals;
-    if(!cloud.normals.empty())
-      for(std::size_t i : input.input_index)
-        normals.push_back(cloud.normals[i]);
-    const auto np = CAS3::parameters::reference_normals(std::cref(normals),
+    const auto np = CAS3::parameters::reference_normals(std::cref(cloud.normals),
       CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
     analysis = o.denoising_neighbors > 0
-      ? std::make_unique<Analysis>(input.points.begin(), input.points.end(),
+      ? std::make_unique<Analysis>(points.begin(), points.end(),
                                    CAS3::parameters::denoising_neighbors(o.denoising_neighbors, np))
-      : std::make_unique<Analysis>(input.points.begin(), input.points.end(), np);
+      : std::make_unique<Analysis>(points.begin(), points.end(), np);
   }
   catch(const std::invalid_argument& e) { throw Failure(o.input + ": " + e.what()); }
-  if(!input.outliers.empty())
-    progress(std::to_string(input.outliers.size()) + " isolated far outliers left out");
+  const std::vector<std::size_t>& outliers = analysis->outliers();
+  std::vector<bool> is_outlier(points.size(), false);
+  for(std::size_t i : outliers)
+    is_outlier[i] = true;
+  if(!outliers.empty())
+    progress(std::to_string(outliers.size()) + " isolated far outliers left out");
   progress("built the conformal alpha shape");
 
   std::ofstream csv;
@@ -606,14 +453,14 @@ int run(const Options& o)
   char noise[200];
   const CAS3::Denoising_plan& smoothing = analysis->denoising();
   std::snprintf(noise, sizeof noise, "noise: %.3g x spacing (spacing %.4g)%s; ", analysis->noise().noise,
-                input.length_to_input(analysis->noise().spacing),
+                analysis->noise().spacing,
                 analysis->noise().noise_24 > 1.3 * analysis->noise().noise ? ", mostly unresolved detail" : "");
   const std::string smoothing_text = smoothing.passes == 0 ? std::string("no smoothing\n")
     : "smoothed by " + std::to_string(smoothing.passes) + " jet pass(es) over "
         + std::to_string(smoothing.neighbors) + " neighbours before building the shape\n";
   summary << o.input << ": " << points.size() << " points";
-  if(!input.outliers.empty())
-    summary << ", " << input.outliers.size() << " isolated far outliers left out (outlier column)";
+  if(!outliers.empty())
+    summary << ", " << outliers.size() << " isolated far outliers left out (outlier column)";
   summary << "\n" << noise << smoothing_text
           << "surface: " << (o.extraction == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
           << "; orientation: "
@@ -622,7 +469,7 @@ int run(const Options& o)
           << "\n"
           << "layer               a  own vertex  nearest  no value  radius(median)"
              "    H:  5%          50%          95%      K:  5%          50%          95%\n";
-  std::vector<Layer> layers;
+  std::vector<cas3::Layer> layers;
   for(const CAS3::Scale& scale : o.scales)
   {
     const double a = analysis->alpha(scale);
@@ -632,15 +479,12 @@ int run(const Options& o)
     summary << "scale " << scale.label() << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
             << " closed, " << report.number_of_open_parts() << " open), "
             << report.number_of_points_off_surface << " points off the surface\n";
-    Analysis::Surface written = surface_in_input_units(surface, input, points);
+    Analysis::Surface written = cas3::surface_at_input_points(surface, points);
     for(const CAS3::Neighborhood& neighborhood : o.neighborhoods)
     {
-      // a radius in model units: the library works on the normalised points
-      const CAS3::Neighborhood normalized = neighborhood.kind() == CAS3::Neighborhood::RADIUS
-        ? CAS3::Neighborhood::radius(input.length_from_input(neighborhood.value())) : neighborhood;
       const std::vector<CAS3::Point_curvature<K> > curvatures =
-        to_input_units(analysis->estimate_curvatures(surface, normalized, o.estimator), input, points.size());
-      Layer layer;
+        analysis->estimate_curvatures(surface, neighborhood, o.estimator);
+      cas3::Layer layer(curvatures);
       layer.label = (o.scales.size() > 1 ? file_label(scale) + "_" : std::string()) + neighborhood.label();
       std::ostringstream description;
       description << "a = " << a << " (" << scale.label() << "), ";
@@ -649,26 +493,22 @@ int run(const Options& o)
       else if(neighborhood.kind() == CAS3::Neighborhood::AUTOMATIC)
         description << "radius chosen per point (radius_" << layer.label << ")";
       else
-        description << "radius " << input.length_to_input(analysis->radius(normalized));
+        description << "radius " << analysis->radius(neighborhood);
       layer.description = description.str();
-      layer.values.resize(points.size() * Layer::number_of_values);
-      layer.source.resize(points.size());
       std::size_t count[3] = {0, 0, 0};
       std::vector<double> H, Kg, radius;
-      for(std::size_t i = 0; i < points.size(); ++i)
+      for(const CAS3::Point_curvature<K>& c : curvatures)
       {
-        const CAS3::Point_curvature<K>& c = curvatures[i];
-        layer.set(i, c);
         ++count[c.source];
         H.push_back(c.mean_curvature);
         Kg.push_back(c.gaussian_curvature);
         if(std::isfinite(c.radius))
           radius.push_back(c.radius);
       }
-      add_layer_to_surface(written, layer);
+      cas3::add_layer_to_surface(written, layer);
       if(o.csv)
       {
-        append_csv_rows(csv, points, a, neighborhood, curvatures, input.is_outlier);
+        append_csv_rows(csv, points, a, neighborhood, curvatures, is_outlier);
         if(!csv)
           throw Failure("cannot write into the output directory " + o.output);
       }
@@ -679,7 +519,7 @@ int run(const Options& o)
                     100.0 * double(count[CAS3::SURFACE_VERTEX]) / n,
                     100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / n, 100.0 * double(count[CAS3::NO_VALUE]) / n,
                     radius.empty() ? std::nan("") : radius[radius.size() / 2]);
-      summary << row << "  " << quantiles(H) << "  " << quantiles(Kg) << "\n";
+      summary << row << "  " << cas3::quantiles(H) << "  " << cas3::quantiles(Kg) << "\n";
       progress("layer " + layer.label + ": curvature estimated");
       layers.push_back(std::move(layer));
     }
@@ -699,7 +539,7 @@ int run(const Options& o)
       std::raise(SIGABRT);
   }
   std::ofstream cloud_ply = output.open("curvatures.ply", true);
-  write_point_cloud(cloud_ply, points, input.is_outlier, layers);
+  cas3::write_point_cloud(cloud_ply, points, is_outlier, layers);
   cloud_ply.close();
   if(!cloud_ply)
     throw Failure("cannot write into the output directory " + o.output);

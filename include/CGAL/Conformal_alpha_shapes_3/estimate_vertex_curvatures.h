@@ -38,10 +38,12 @@ namespace Conformal_alpha_shapes_3 {
 template <typename GT>
 struct Principal_curvatures_and_directions
 {
-  typename GT::FT max_curvature;
-  typename GT::FT min_curvature;
-  typename GT::Vector_3 max_direction;
-  typename GT::Vector_3 min_direction;
+  // NaN until set: an estimate that is not made reads as undefined
+  typename GT::FT max_curvature = std::numeric_limits<double>::quiet_NaN();
+  typename GT::FT min_curvature = std::numeric_limits<double>::quiet_NaN();
+  typename GT::Vector_3 max_direction = typename GT::Vector_3(std::numeric_limits<double>::quiet_NaN(),
+    std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
+  typename GT::Vector_3 min_direction = max_direction;
 };
 
 /// \ingroup PkgConformalAlphaShapes3Curvature

@@ -19,6 +19,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/scales_and_neighborhoods.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
@@ -46,20 +47,29 @@ namespace Conformal_alpha_shapes_3 {
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
-Multi-scale curvature of a point cloud: the noise of the points is
-estimated (`estimate_noise()`) and, when it matters, the points are
-smoothed (`denoise()`); the conformal alpha shape of the (smoothed) points
-is built once; then, for any scale, its surface is extracted
-(`extract_surface()` by default, or `extract_boundary_surface()`), and for
-any ring size the curvature estimated on that surface
-(`estimate_vertex_curvatures()`) is given back per input point. Surfaces
-are built on the smoothed positions; values are reported by input index.
+Multi-scale curvature of a point cloud: the input is checked, recentred
+and rescaled, and isolated far outliers are left out (the manual, section
+"Input Rules"); the noise of the points is estimated (`estimate_noise()`)
+and, when it matters, the points are smoothed (`denoise()`); the conformal
+alpha shape of these working points is built once; then, for any scale,
+its surface is extracted (`extract_surface()` by default, or
+`extract_boundary_surface()`), and for any neighbourhood the curvature
+estimated on that surface (`estimate_vertex_curvatures()`) is given back
+per input point.
+
+Everything given back is in the input's units and indices: surfaces lie at
+the (smoothed) positions mapped back to input coordinates, radii and
+distances are lengths of the input, curvatures are inverse lengths of the
+input, and values are reported by input index. Only `shape()` is in the
+working frame, the input recentred and scaled by a power of two, so that
+no construction overflows or underflows whatever the input's magnitude.
 
 Surfaces are `Surface_mesh` objects with the vertex properties
-`"v:input_index"` (`std::size_t`) and, after `estimate_curvatures()`,
-`"v:normal"` (`Vector_3`), `"v:mean_curvature"`, `"v:gaussian_curvature"`,
-`"v:k1"`, `"v:k2"` (`double`), `"v:d1"` and `"v:d2"` (`Vector_3`):
-`CGAL::IO::write_PLY()` writes the first six.
+`"v:input_index"` (`std::size_t`, an index of the input) and, after
+`estimate_curvatures()`, `"v:normal"` (`Vector_3`), `"v:mean_curvature"`,
+`"v:gaussian_curvature"`, `"v:k1"`, `"v:k2"`, `"v:radius"` (`double`),
+`"v:d1"` and `"v:d2"` (`Vector_3`): `CGAL::IO::write_PLY()` writes the
+first six.
 
 \tparam Kernel a CGAL kernel with `double` coordinates
         (default: `Exact_predicates_inexact_constructions_kernel`)
@@ -107,8 +117,10 @@ public:
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
-  \throws std::invalid_argument as `Conformal_alpha_shape_3`, and when
-  `reference_normals` is neither empty nor one per point.
+  \throws std::invalid_argument naming the first input point with a NaN or
+  infinite coordinate; when `reference_normals` is neither empty nor one
+  per point; and as `Conformal_alpha_shape_3` when the points left do not
+  span 3D.
   */
   template <class InputIterator, class NamedParameters = CGAL::parameters::Default_named_parameters>
   Multiscale_curvatures(InputIterator first, InputIterator last,
@@ -119,10 +131,22 @@ public:
     m_extraction = choose_parameter(get_parameter(np, internal_np_cas3::surface_extraction), ADVANCING_FRONT);
     m_reference_normals = choose_parameter(get_parameter(np, internal_np_cas3::reference_normals),
                                            std::vector<Vector>());
-    std::vector<Point> points(first, last);
-    if(!m_reference_normals.empty() && m_reference_normals.size() != points.size())
+    m_input = internal::normalize_input<Kernel>(std::vector<Point>(first, last));
+    if(!m_reference_normals.empty() && m_reference_normals.size() != m_input.is_outlier.size())
       throw std::invalid_argument("Multiscale_curvatures: " + std::to_string(m_reference_normals.size())
-                                  + " reference normals for " + std::to_string(points.size()) + " points");
+                                  + " reference normals for " + std::to_string(m_input.is_outlier.size())
+                                  + " points");
+    if(!m_reference_normals.empty())  // those of the kept points
+    {
+      for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
+        m_reference_normals[i] = m_reference_normals[m_input.input_index[i]];
+      m_reference_normals.resize(m_input.input_index.size());
+    }
+    m_kept_index.assign(m_input.is_outlier.size(), std::size_t(-1));
+    for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
+      m_kept_index[m_input.input_index[i]] = i;
+    std::vector<Point> points = std::move(m_input.points);
+    m_input.points = std::vector<Point>();
     const Denoising denoising = choose_parameter(get_parameter(np, internal_np_cas3::denoising),
                                                  AUTOMATIC_DENOISING);
     m_noise = estimate_noise(points);
@@ -138,9 +162,22 @@ public:
       choose_parameter(get_parameter(np, internal_np_cas3::local_scale_estimator), NOISE_ROBUST_POLE_DISTANCE)));
   }
 
+  /// the conformal alpha shape, in the working frame (see above): its
+  /// input indices are those of the points kept (not outliers), in input order
   const Shape& shape() const { return m_shape; }
-  /// the noise of the input points (`estimate_noise()`)
-  const Noise_estimate& noise() const { return m_noise; }
+  /// the number of input points
+  std::size_t number_of_input_points() const { return m_input.is_outlier.size(); }
+  /// the input indices of the isolated far outliers, left off every surface (increasing)
+  const std::vector<std::size_t>& outliers() const { return m_input.outliers; }
+  /// whether input point `i` is an isolated far outlier
+  bool is_outlier(std::size_t i) const { return m_input.is_outlier[i]; }
+  /// the noise of the input points (`estimate_noise()`); `spacing` in input units
+  Noise_estimate noise() const
+  {
+    Noise_estimate n = m_noise;
+    n.spacing = m_input.length_to_input(n.spacing);
+    return n;
+  }
   /// how the points were smoothed before the shape was built (`passes` is 0 when they were not)
   const Denoising_plan& denoising() const { return m_denoising; }
   /// how surfaces are extracted
@@ -162,30 +199,40 @@ public:
     return m_suggested;
   }
 
-  /// Replaces `surface` with the surface at `alpha`.
+  /// Replaces `surface` with the surface at `alpha`, in input units and
+  /// indices.
   Surface_report extract_surface(double alpha, Surface& surface) const
   {
     surface.clear();
     auto input_index = surface.template add_property_map<Surface_vertex, std::size_t>("v:input_index").first;
-    if(m_extraction == ADVANCING_FRONT)
-      return Conformal_alpha_shapes_3::extract_surface(m_shape, alpha, surface,
-        parameters::vertex_input_index_map(input_index, parameters::reference_normals(std::cref(m_reference_normals))));
-    const Boundary_surface_report solid =
-      extract_boundary_surface(m_shape, alpha, surface, parameters::vertex_input_index_map(input_index));
     Surface_report report;
-    static_cast<Surface_counts&>(report) = solid;
-    auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), surface);
-    report.number_of_parts = CGAL::Polygon_mesh_processing::connected_components(surface, part);
-    report.number_of_closed_parts = report.number_of_parts;  // the boundary of a solid is closed
+    if(m_extraction == ADVANCING_FRONT)
+      report = Conformal_alpha_shapes_3::extract_surface(m_shape, alpha, surface,
+        parameters::vertex_input_index_map(input_index, parameters::reference_normals(std::cref(m_reference_normals))));
+    else
+    {
+      static_cast<Surface_counts&>(report) =
+        extract_boundary_surface(m_shape, alpha, surface, parameters::vertex_input_index_map(input_index));
+      auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), surface);
+      report.number_of_parts = CGAL::Polygon_mesh_processing::connected_components(surface, part);
+      report.number_of_closed_parts = report.number_of_parts;  // the boundary of a solid is closed
+    }
+    for(Surface_vertex v : surface.vertices())
+    {
+      input_index[v] = m_input.input_index[input_index[v]];
+      surface.point(v) = m_input.to_input(surface.point(v));
+    }
+    // the outliers are input points too, off every surface
+    report.number_of_points_off_surface += m_input.outliers.size();
+    report.number_of_input_points += m_input.outliers.size();
     return report;
   }
 
-  /// The absolute radius of a neighbourhood given in spacings (other
-  /// kinds: their value).
+  /// The radius of a neighbourhood of kind `Neighborhood::RADIUS` or
+  /// `Neighborhood::SPACINGS`, in input units.
   double radius(const Neighborhood& neighborhood) const
   {
-    return neighborhood.kind() == Neighborhood::SPACINGS ? neighborhood.value() * m_noise.spacing
-                                                         : neighborhood.value();
+    return m_input.length_to_input(working_radius(neighborhood));
   }
 
   /// How far, in local spacings, an input point may be from the surface and
@@ -209,11 +256,12 @@ public:
     auto gaussian = surface.template add_property_map<Surface_vertex, double>("v:gaussian_curvature").first;
     auto used_radius = surface.template add_property_map<Surface_vertex, double>("v:radius").first;
     auto principal = get(CGAL::dynamic_vertex_property_t<Principal_curvatures_and_directions<Kernel> >(), surface);
+    const Working_point_map working = working_points(surface);
     auto outputs = parameters::vertex_mean_curvature_map(mean,
                    parameters::vertex_Gaussian_curvature_map(gaussian,
                    parameters::vertex_principal_curvatures_and_directions_map(principal,
                    parameters::vertex_neighborhood_radius_map(used_radius, parameters::estimator(estimator)))))
-                     .vertex_normal_map(normal);
+                     .vertex_normal_map(normal).vertex_point_map(working);
     switch(neighborhood.kind())
     {
       case Neighborhood::RINGS:
@@ -221,7 +269,7 @@ public:
         break;
       case Neighborhood::RADIUS:
       case Neighborhood::SPACINGS:
-        estimate_vertex_curvatures(surface, parameters::neighborhood_radius(radius(neighborhood), outputs));
+        estimate_vertex_curvatures(surface, parameters::neighborhood_radius(working_radius(neighborhood), outputs));
         break;
       case Neighborhood::AUTOMATIC:
       {
@@ -236,32 +284,70 @@ public:
     auto k2 = surface.template add_property_map<Surface_vertex, double>("v:k2").first;
     auto d1 = surface.template add_property_map<Surface_vertex, Vector>("v:d1").first;
     auto d2 = surface.template add_property_map<Surface_vertex, Vector>("v:d2").first;
+    std::vector<Point_curvature<Kernel> > by_vertex = values_per_vertex(surface, working, principal);
     for(Surface_vertex v : surface.vertices())
     {
       const Principal_curvatures_and_directions<Kernel> p = get(principal, v);
-      k1[v] = p.max_curvature;
-      k2[v] = p.min_curvature;
+      mean[v] = m_input.curvature_to_input(mean[v]);
+      gaussian[v] = m_input.gaussian_curvature_to_input(gaussian[v]);
+      used_radius[v] = m_input.length_to_input(used_radius[v]);
+      k1[v] = m_input.curvature_to_input(p.max_curvature);
+      k2[v] = m_input.curvature_to_input(p.min_curvature);
       d1[v] = p.max_direction;
       d2[v] = p.min_direction;
     }
-    return values_per_point(surface);
+    std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
+    for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
+      per_point[m_input.input_index[i]] = in_input_units(by_vertex[m_shape.input_vertex(i)->vertex_index()]);
+    return per_point;
   }
 
 private:
-  // The values of `surface`'s properties for every input point (see
-  // `estimate_curvatures()`).
-  std::vector<Point_curvature<Kernel> > values_per_point(const Surface& surface) const
+  typedef typename CGAL::dynamic_vertex_property_t<Point> Working_point_tag;
+  typedef typename boost::property_map<Surface, Working_point_tag>::const_type Working_point_map;
+  typedef typename boost::property_map<Surface, CGAL::dynamic_vertex_property_t<
+    Principal_curvatures_and_directions<Kernel> > >::type Principal_map;
+
+  // The surface's points in the working frame: the fits and the
+  // nearest-surface search run there (see the class description).
+  Working_point_map working_points(const Surface& surface) const
+  {
+    auto working = get(Working_point_tag(), surface);
+    for(Surface_vertex v : surface.vertices())
+      put(working, v, m_input.to_normalized(surface.point(v)));
+    return working;
+  }
+
+  // The radius of a neighbourhood in the working frame.
+  double working_radius(const Neighborhood& neighborhood) const
+  {
+    return neighborhood.kind() == Neighborhood::SPACINGS ? neighborhood.value() * m_noise.spacing
+                                                         : m_input.length_from_input(neighborhood.value());
+  }
+
+  // Lengths and curvatures of the working frame in input units.
+  Point_curvature<Kernel> in_input_units(Point_curvature<Kernel> c) const
+  {
+    c.distance = m_input.length_to_input(c.distance);
+    c.radius = m_input.length_to_input(c.radius);
+    c.mean_curvature = m_input.curvature_to_input(c.mean_curvature);
+    c.gaussian_curvature = m_input.gaussian_curvature_to_input(c.gaussian_curvature);
+    c.principal.max_curvature = m_input.curvature_to_input(c.principal.max_curvature);
+    c.principal.min_curvature = m_input.curvature_to_input(c.principal.min_curvature);
+    return c;
+  }
+
+  // The values of the fits on `surface` for every vertex of the shape, in the
+  // working frame (see `estimate_curvatures()`).
+  std::vector<Point_curvature<Kernel> > values_per_vertex(const Surface& surface, const Working_point_map& working,
+                                                          const Principal_map& principal) const
   {
     auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
     auto normal = surface.template property_map<Surface_vertex, Vector>("v:normal").first;
     auto used_radius = surface.template property_map<Surface_vertex, double>("v:radius").first;
-    auto k1 = surface.template property_map<Surface_vertex, double>("v:k1").first;
-    auto k2 = surface.template property_map<Surface_vertex, double>("v:k2").first;
-    auto d1 = surface.template property_map<Surface_vertex, Vector>("v:d1").first;
-    auto d2 = surface.template property_map<Surface_vertex, Vector>("v:d2").first;
+    auto k1 = [&](Surface_vertex v) { return get(principal, v).max_curvature; };
+    auto d1 = [&](Surface_vertex v) { return get(principal, v).max_direction; };
 
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    const Vector nan_vector(nan, nan, nan);
     auto record = [&](Point_source source, double distance, double r, const Vector& n, double max_k, double min_k,
                       const Vector& max_d, const Vector& min_d) {
       Point_curvature<Kernel> c;
@@ -274,27 +360,29 @@ private:
       c.principal = Principal_curvatures_and_directions<Kernel>{max_k, min_k, max_d, min_d};
       return c;
     };
-    const Point_curvature<Kernel> none = record(NO_VALUE, nan, nan, nan_vector, nan, nan, nan_vector, nan_vector);
+    const Point_curvature<Kernel> none;  // NaN everywhere
 
     // own vertices first; at a pinch, the first umbrella's defined estimate
     std::vector<Point_curvature<Kernel> > by_vertex(m_shape.number_of_vertices(), none);
     for(Surface_vertex v : surface.vertices())
     {
-      Point_curvature<Kernel>& c = by_vertex[m_shape.input_vertex(input_index[v])->vertex_index()];
-      if(c.source == NO_VALUE && std::isfinite(k1[v]))
-        c = record(SURFACE_VERTEX, 0, used_radius[v], normal[v], k1[v], k2[v], d1[v], d2[v]);
+      Point_curvature<Kernel>& c = by_vertex[m_shape.input_vertex(m_kept_index[input_index[v]])->vertex_index()];
+      const Principal_curvatures_and_directions<Kernel> p = get(principal, v);
+      if(c.source == NO_VALUE && std::isfinite(p.max_curvature))
+        c = record(SURFACE_VERTEX, 0, used_radius[v], normal[v], p.max_curvature, p.min_curvature,
+                   p.max_direction, p.min_direction);
     }
 
     // the others from the nearest point of the surface (usually few or none:
     // the search structures are built only when some point needs them)
-    typedef CGAL::AABB_face_graph_triangle_primitive<Surface> Primitive;
+    typedef CGAL::AABB_face_graph_triangle_primitive<Surface, Working_point_map> Primitive;
     typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
     Tree tree;
     const bool all_have_values = std::none_of(by_vertex.begin(), by_vertex.end(),
       [](const Point_curvature<Kernel>& c) { return c.source == NO_VALUE; });
     if(!all_have_values && !CGAL::is_empty(surface))
     {
-      tree.insert(faces(surface).first, faces(surface).second, surface);
+      tree.insert(faces(surface).first, faces(surface).second, surface, working);
       tree.accelerate_distance_queries();
     }
     // the local spacing of the local-scale rule
@@ -320,15 +408,15 @@ private:
       double weight[3], total = 0;
       for(int j = 0; j < 3; ++j)
       {
-        weight[j] = std::isfinite(k1[corner[j]])
-          ? std::sqrt(CGAL::to_double(CGAL::squared_area(nearest.first, surface.point(corner[(j + 1) % 3]),
-                                                         surface.point(corner[(j + 2) % 3]))))
+        weight[j] = std::isfinite(k1(corner[j]))
+          ? std::sqrt(CGAL::to_double(CGAL::squared_area(nearest.first, get(working, corner[(j + 1) % 3]),
+                                                         get(working, corner[(j + 2) % 3]))))
           : 0.;
         total += weight[j];
       }
       if(!(total > 0))  // a degenerate facet: its corners with values, alike
         for(int j = 0; j < 3; ++j)
-          total += (weight[j] = std::isfinite(k1[corner[j]]) ? 1. : 0.);
+          total += (weight[j] = std::isfinite(k1(corner[j])) ? 1. : 0.);
       if(!(total > 0))
         continue;
       Vector n = CGAL::NULL_VECTOR, max_d = CGAL::NULL_VECTOR;
@@ -343,10 +431,10 @@ private:
           reference = j;
         n = n + w * normal[corner[j]];
         // a principal direction is a line: align signs before averaging
-        max_d = max_d + (d1[corner[j]] * d1[corner[reference]] < 0 ? -w : w) * d1[corner[j]];
+        max_d = max_d + (d1(corner[j]) * d1(corner[reference]) < 0 ? -w : w) * d1(corner[j]);
         r += w * used_radius[corner[j]];
-        max_k += w * k1[corner[j]];
-        min_k += w * k2[corner[j]];
+        max_k += w * k1(corner[j]);
+        min_k += w * get(principal, corner[j]).min_curvature;
       }
       n = n / std::sqrt(CGAL::to_double(n.squared_length()));
       max_d = max_d - (max_d * n) * n;
@@ -354,13 +442,11 @@ private:
       const double distance = c.distance;
       c = record(NEAREST_SURFACE_POINT, distance, r, n, max_k, min_k, max_d, CGAL::cross_product(n, max_d));
     }
-
-    std::vector<Point_curvature<Kernel> > per_point(m_shape.number_of_input_points());
-    for(std::size_t i = 0; i < per_point.size(); ++i)
-      per_point[i] = by_vertex[m_shape.input_vertex(i)->vertex_index()];
-    return per_point;
+    return by_vertex;
   }
 
+  internal::Normalized_input<Kernel> m_input;  // the working frame and the outliers (its points moved out)
+  std::vector<std::size_t> m_kept_index;       // input index -> index among the kept points
   Shape m_shape;
   Surface_extraction m_extraction = ADVANCING_FRONT;
   std::vector<Vector> m_reference_normals;

@@ -190,7 +190,8 @@ struct Point_curvature
   /// the radius of the neighbourhood of the fit (for rings: the farthest
   /// neighbour used); interpolated like the values
   double radius = std::numeric_limits<double>::quiet_NaN();
-  typename Kernel::Vector_3 normal;
+  typename Kernel::Vector_3 normal = typename Kernel::Vector_3(std::numeric_limits<double>::quiet_NaN(),
+    std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
   typename Kernel::FT mean_curvature = std::numeric_limits<double>::quiet_NaN();
   typename Kernel::FT gaussian_curvature = std::numeric_limits<double>::quiet_NaN();
   /// `max_curvature` is `k1`, `max_direction` `d1`; `min_curvature` is `k2`

@@ -4,9 +4,9 @@
 // 3 signed bytes on a small grid, times a scale 2^(s - 64) read from the
 // second byte (duplicates, coplanar and cospherical sets are common). Then:
 // input hygiene, the conformal alpha shape, the automatic scale and a
-// quantile, surface extraction and curvature at 1 and 2 rings. The only
+// quantile, surface extraction and curvature at 1 and 2 rings, 4 spacings
+// and the automatic radius. The only
 // exception allowed is the documented std::invalid_argument.
-#include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -46,16 +46,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try
   {
-    const CAS3::internal::Normalized_input<K> input = CAS3::internal::normalize_input<K>(points);
-    const CAS3::Multiscale_curvatures<K> analysis(input.points.begin(), input.points.end());
+    const CAS3::Multiscale_curvatures<K> analysis(points.begin(), points.end());
     for(const CAS3::Scale& scale : {CAS3::Scale::automatic(), CAS3::Scale::quantile(0.5)})
     {
       CAS3::Multiscale_curvatures<K>::Surface surface;
       analysis.extract_surface(analysis.alpha(scale), surface);
-      for(int rings : {1, 2})
+      for(const CAS3::Neighborhood& neighborhood : {CAS3::Neighborhood::rings(1), CAS3::Neighborhood::rings(2),
+                                                    CAS3::Neighborhood::spacings(4), CAS3::Neighborhood::automatic()})
       {
-        const auto curvatures = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(rings));
-        if(curvatures.size() != input.points.size())
+        const auto curvatures = analysis.estimate_curvatures(surface, neighborhood);
+        if(curvatures.size() != points.size())
           std::abort();
       }
     }

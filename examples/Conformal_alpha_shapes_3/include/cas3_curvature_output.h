@@ -1,0 +1,160 @@
+// What conformal_curvature writes per layer (a scale and a neighbourhood):
+// the values per input point, the binary PLY point cloud that holds them,
+// and the same values as float properties of the surface PLY. The
+// benchmark of the default job writes through the same code.
+#ifndef CAS3_CURVATURE_OUTPUT_H
+#define CAS3_CURVATURE_OUTPUT_H
+
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace cas3 {
+
+// The values of one layer per input point, in input units, as the point
+// cloud file stores them.
+struct Layer
+{
+  static constexpr int number_of_values = 15;
+  static const char* const* value_names()
+  {
+    static const char* const names[number_of_values] = {"nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y",
+                                                         "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
+    return names;
+  }
+  std::string label;       // the property suffix: [scale_]neighbourhood
+  std::string description; // for the file header
+  std::vector<float> values;        // number_of_values per point
+  std::vector<std::uint8_t> source; // Point_source per point
+
+  template <class Kernel>
+  explicit Layer(const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures)
+    : values(curvatures.size() * number_of_values), source(curvatures.size())
+  {
+    for(std::size_t i = 0; i < curvatures.size(); ++i)
+    {
+      const auto& c = curvatures[i];
+      const auto& p = c.principal;
+      const double v[number_of_values] = {c.normal.x(), c.normal.y(), c.normal.z(), c.mean_curvature,
+                                          c.gaussian_curvature, p.max_curvature, p.min_curvature,
+                                          p.max_direction.x(), p.max_direction.y(), p.max_direction.z(),
+                                          p.min_direction.x(), p.min_direction.y(), p.min_direction.z(),
+                                          c.radius, c.distance};
+      for(int j = 0; j < number_of_values; ++j)
+        values[i * number_of_values + std::size_t(j)] = float(v[j]);
+      source[i] = std::uint8_t(c.source);
+    }
+  }
+};
+
+namespace output_detail {
+
+template <class T>
+void put_little_endian(std::string& out, T x)
+{
+  static_assert(std::is_arithmetic<T>::value, "a number");
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &x, sizeof(T));
+  // the platforms of these programs are little-endian; the header says so
+  out.append(bytes, sizeof(T));
+}
+
+} // namespace output_detail
+
+// The point cloud: binary little-endian PLY, double positions, float
+// values, uchar flags; a comment line per layer says what it is.
+template <class Point>
+void write_point_cloud(std::ostream& out, const std::vector<Point>& points, const std::vector<bool>& outlier,
+                       const std::vector<Layer>& layers)
+{
+  using output_detail::put_little_endian;
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\n"
+         << "comment conformal_curvature: values per input point, in input units\n"
+         << "comment source_L: 0 own surface vertex, 1 nearest surface point, 2 no value\n";
+  for(const Layer& layer : layers)
+    header << "comment layer " << layer.label << ": " << layer.description << "\n";
+  header << "element vertex " << points.size() << "\n"
+         << "property double x\nproperty double y\nproperty double z\nproperty uchar outlier\n";
+  for(const Layer& layer : layers)
+  {
+    for(int j = 0; j < Layer::number_of_values; ++j)
+      header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
+    header << "property uchar source_" << layer.label << "\n";
+  }
+  header << "end_header\n";
+  out << header.str();
+  std::string block;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    put_little_endian(block, double(points[i].x()));
+    put_little_endian(block, double(points[i].y()));
+    put_little_endian(block, double(points[i].z()));
+    put_little_endian(block, std::uint8_t(outlier[i] ? 1 : 0));
+    for(const Layer& layer : layers)
+    {
+      for(int j = 0; j < Layer::number_of_values; ++j)
+        put_little_endian(block, layer.values[i * Layer::number_of_values + std::size_t(j)]);
+      put_little_endian(block, layer.source[i]);
+    }
+    if(block.size() > (1u << 20) || i + 1 == points.size())
+    {
+      out.write(block.data(), std::streamsize(block.size()));
+      block.clear();
+    }
+  }
+}
+
+// A copy of the surface with its vertices at their input points (the
+// library's surface lies at the smoothed positions); layers add their values.
+template <class Surface, class Point>
+Surface surface_at_input_points(const Surface& smoothed, const std::vector<Point>& points)
+{
+  Surface surface = smoothed;
+  auto index = surface.template property_map<typename Surface::Vertex_index, std::size_t>("v:input_index").first;
+  for(auto v : surface.vertices())
+    surface.point(v) = points[index[v]];
+  return surface;
+}
+
+// Adds the values of a layer as float vertex properties "v:<value>_<label>".
+template <class Surface>
+void add_layer_to_surface(Surface& surface, const Layer& layer)
+{
+  auto index = surface.template property_map<typename Surface::Vertex_index, std::size_t>("v:input_index").first;
+  for(int j = 0; j < Layer::number_of_values; ++j)
+  {
+    auto map = surface.template add_property_map<typename Surface::Vertex_index, float>(
+                        std::string("v:") + Layer::value_names()[j] + "_" + layer.label).first;
+    for(auto v : surface.vertices())
+      map[v] = layer.values[index[v] * Layer::number_of_values + std::size_t(j)];
+  }
+}
+
+// The 5%, 50% and 95% quantiles of the finite values, for the summaries.
+inline std::string quantiles(std::vector<double> values)
+{
+  values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
+               values.end());
+  if(values.empty())
+    return "            -            -            -";
+  std::sort(values.begin(), values.end());
+  char text[64];
+  auto at = [&](double q) { return values[std::size_t(q * double(values.size() - 1))]; };
+  std::snprintf(text, sizeof text, " %12.4g %12.4g %12.4g", at(0.05), at(0.5), at(0.95));
+  return text;
+}
+
+} // namespace cas3
+
+#endif // CAS3_CURVATURE_OUTPUT_H
