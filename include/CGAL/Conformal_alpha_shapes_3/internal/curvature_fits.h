@@ -161,10 +161,10 @@ inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbor>& 
 // The uncertainty of a quadric fit's mean curvature, from its residuals.
 struct Quadric_fit_error
 {
-  double mean_curvature;      // standard error of H, the noise taken from this fit's residuals
-  double noise;               // standard deviation of the heights about the fit (model units)
-  double degrees_of_freedom;  // effective: weighted rows less what the fit absorbs
-  double per_noise;           // standard error of H per unit of noise: mean_curvature / noise
+  double mean_curvature = 0;      // standard error of H, the noise taken from this fit's residuals
+  double noise = 0;               // standard deviation of the heights about the fit (model units)
+  double degrees_of_freedom = 0;  // effective: weighted rows less what the fit absorbs
+  double per_noise = 0;           // standard error of H per unit of noise: mean_curvature / noise
 };
 
 // Least-squares fit of the height function
