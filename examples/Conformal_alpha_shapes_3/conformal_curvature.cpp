@@ -464,7 +464,7 @@ int run(const Options& o)
   summary << "\n" << noise << smoothing_text
           << "surface: " << (o.extraction == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
           << "; orientation: "
-          << (analysis->has_reference_normals() ? "the majority of the input normals, per sheet"
+          << (analysis->has_reference_normals() ? "the majority of the input normals, per sheet; values per point"
                                                 : "closed sheets outward, open sheets away from the centre")
           << "\n"
           << "layer               a  own vertex  nearest  no value  radius(median)"
@@ -522,6 +522,26 @@ int run(const Options& o)
       summary << row << "  " << cas3::quantiles(H) << "  " << cas3::quantiles(Kg) << "\n";
       progress("layer " + layer.label + ": curvature estimated");
       layers.push_back(std::move(layer));
+    }
+    if(!cloud.normals.empty())
+    {
+      // how far the oriented sheets follow the input normals, before each
+      // point's values are turned to its own normal's side
+      auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
+      auto normal = surface.property_map<Analysis::Surface_vertex, K::Vector_3>("v:normal").first;
+      std::size_t agree = 0, compared = 0;
+      for(auto v : surface.vertices())
+        if(normal[v] != K::Vector_3(CGAL::NULL_VECTOR) && std::isfinite(normal[v].x()))
+        {
+          ++compared;
+          agree += normal[v] * cloud.normals[index[v]] > 0 ? 1 : 0;
+        }
+      char line[160];
+      std::snprintf(line, sizeof line,
+                    "scale %s: the sheets agree with the input normals at %.1f%% of their vertices; "
+                    "each point's values are on its own normal's side\n",
+                    scale.label().c_str(), compared == 0 ? 0.0 : 100.0 * double(agree) / double(compared));
+      summary << line;
     }
     // colours: the ramp of the first layer's mean curvature
     auto colour = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;

@@ -34,7 +34,9 @@ namespace Conformal_alpha_shapes_3 {
 /// \ingroup PkgConformalAlphaShapes3Curvature
 /// Principal curvatures and directions at a vertex, as CGAL 6's
 /// `Polygon_mesh_processing::Principal_curvatures_and_directions`:
-/// `max_curvature >= min_curvature`, unit directions tangent to the surface.
+/// `max_curvature >= min_curvature`, unit directions tangent to the surface,
+/// right-handed with the normal: `min_direction` is the cross product of
+/// the normal and `max_direction`.
 template <typename GT>
 struct Principal_curvatures_and_directions
 {

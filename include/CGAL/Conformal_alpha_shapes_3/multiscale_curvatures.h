@@ -91,7 +91,7 @@ public:
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{reference_normals}
-      \cgalParamDescription{a normal per input point (a scanner's) that the surfaces' orientation follows, or an empty vector}
+      \cgalParamDescription{a normal per input point (a scanner's), or an empty vector: each part of a surface is oriented by the majority of its points' normals, and each point's values by its own normal (see `estimate_curvatures()`)}
       \cgalParamType{`std::vector<Vector>`}
       \cgalParamDefault{empty}
     \cgalParamNEnd
@@ -246,7 +246,11 @@ public:
   input point: a vertex of the surface has its own fit; any other point
   takes the values at its nearest point on the surface, interpolated over
   the facet there, unless it is farther than `far_from_surface()` local
-  spacings (see `Point_source`).
+  spacings (see `Point_source`). With reference normals, a point whose
+  reference normal points to the other side of the surface gets the values
+  seen from that side: normal and mean and principal curvatures negated,
+  principal directions swapped; the surface's own properties keep the
+  orientation of its part.
   */
   std::vector<Point_curvature<Kernel> > estimate_curvatures(Surface& surface, const Neighborhood& neighborhood,
                                                             Curvature_estimator estimator = QUADRIC_FIT) const
@@ -298,7 +302,12 @@ public:
     }
     std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
     for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
-      per_point[m_input.input_index[i]] = in_input_units(by_vertex[m_shape.input_vertex(i)->vertex_index()]);
+    {
+      Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
+      c = in_input_units(by_vertex[m_shape.input_vertex(i)->vertex_index()]);
+      if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
+        take_other_side(c);
+    }
     return per_point;
   }
 
@@ -323,6 +332,23 @@ private:
   {
     return neighborhood.kind() == Neighborhood::SPACINGS ? neighborhood.value() * m_noise.spacing
                                                          : m_input.length_from_input(neighborhood.value());
+  }
+
+  // The same curvature seen from the other side of the surface: the
+  // normal and the signs of the curvatures flip, the principal directions
+  // swap roles (so that d1 x d2 is still the normal). With reference
+  // normals, every point's values are taken on its reference's side: a
+  // surface part is oriented by the majority of its points, and this makes
+  // the few points that disagree with their part follow their own normal.
+  static void take_other_side(Point_curvature<Kernel>& c)
+  {
+    Principal_curvatures_and_directions<Kernel>& p = c.principal;
+    c.normal = -c.normal;
+    c.mean_curvature = -c.mean_curvature;
+    const double max_curvature = -p.min_curvature;
+    p.min_curvature = -p.max_curvature;
+    p.max_curvature = max_curvature;
+    std::swap(p.max_direction, p.min_direction);
   }
 
   // Lengths and curvatures of the working frame in input units.

@@ -48,15 +48,18 @@ inline Tangent_frame frame_from_normal(const Vec3& n)
 }
 
 // Principal curvatures and directions of the second fundamental form
-// [[a, b/2], [b/2, c]] given in the frame (e1, e2).
+// [[a, b/2], [b/2, c]] given in the frame (e1, e2). The eigenvectors' signs
+// are arbitrary; the directions are made right-handed with the normal
+// (d2 = n x d1), so that seeing the surface from the other side is a
+// matter of swapping them.
 inline Local_curvature from_tangent_form(const Tangent_frame& f, double a, double b, double c)
 {
   Eigen::Matrix2d form;
   form << a, b / 2, b / 2, c;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(form);  // increasing eigenvalues
-  const Eigen::Vector2d v_min = eig.eigenvectors().col(0), v_max = eig.eigenvectors().col(1);
-  return Local_curvature{f.n, eig.eigenvalues()(1), eig.eigenvalues()(0),
-                         v_max(0) * f.e1 + v_max(1) * f.e2, v_min(0) * f.e1 + v_min(1) * f.e2};
+  const Eigen::Vector2d v_max = eig.eigenvectors().col(1);
+  const Vec3 d1 = v_max(0) * f.e1 + v_max(1) * f.e2;
+  return Local_curvature{f.n, eig.eigenvalues()(1), eig.eigenvalues()(0), d1, f.n.cross(d1)};
 }
 
 // One neighbor seen from the center vertex p: q - p, and the normal
@@ -66,7 +69,6 @@ struct Neighbor
   Vec3 offset;
   double normal_curvature;
 };
-// The former spelling, still used by estimate_vertex_curvatures.h.
 
 // The normal curvature along q - p from the normal difference (the manual,
 // section "Curvature on a Triangle Mesh"; the paper's eq. 3.15):
@@ -263,10 +265,12 @@ inline bool quadric_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_
   if(eig.info() != Eigen::Success)
     return false;
   const Vec3 xu = f.e1 + D * f.n, xv = f.e2 + E * f.n;
-  const Eigen::Vector2d v_min = eig.eigenvectors().col(0), v_max = eig.eigenvectors().col(1);
-  out = Local_curvature{((f.n - D * f.e1 - E * f.e2) / w).normalized(), eig.eigenvalues()(1),
-                        eig.eigenvalues()(0), (v_max(0) * xu + v_max(1) * xv).normalized(),
-                        (v_min(0) * xu + v_min(1) * xv).normalized()};
+  const Eigen::Vector2d v_max = eig.eigenvectors().col(1);
+  const Vec3 normal = ((f.n - D * f.e1 - E * f.e2) / w).normalized();
+  const Vec3 d1 = (v_max(0) * xu + v_max(1) * xv).normalized();
+  // the principal directions are orthogonal: d2 is d1 turned about the
+  // normal, right-handed as in from_tangent_form()
+  out = Local_curvature{normal, eig.eigenvalues()(1), eig.eigenvalues()(0), d1, normal.cross(d1)};
   return true;
 }
 
