@@ -449,26 +449,9 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, b
       cas3::Layer layer(curvatures);
       layer.label = neighborhood.label();
       layer.description = "a = " + number(a) + " (auto), " + neighborhood.label();
-      std::size_t count[3] = {0, 0, 0};
-      std::vector<double> H, Kg, radius;
-      for(const CAS3::Point_curvature<K>& c : curvatures)
-      {
-        ++count[c.source];
-        H.push_back(c.mean_curvature);
-        Kg.push_back(c.gaussian_curvature);
-        if(std::isfinite(c.radius)) radius.push_back(c.radius);
-      }
       cas3::add_layer_to_surface(written, layer);
-      if(!radius.empty())
-        std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
-      const std::string summary = cas3::quantiles(H) + cas3::quantiles(Kg);
       layers.push_back(std::move(layer));
-      char note[160];
-      std::snprintf(note, sizeof note, "own vertex %.1f%%, nearest %.1f%%, none %.1f%%",
-                    100.0 * double(count[CAS3::SURFACE_VERTEX]) / double(points.size()),
-                    100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / double(points.size()),
-                    100.0 * double(count[CAS3::NO_VALUE]) / double(points.size()));
-      return std::string(note) + (summary.empty() ? " (no summary)" : "");
+      return cas3::summary_row(neighborhood.label(), a, curvatures);
     });
   }
   m.stage("write surface PLY (binary, 5 layers, colours)", "stage", [&] {

@@ -495,16 +495,6 @@ int run(const Options& o)
       else
         description << "radius " << analysis->radius(neighborhood);
       layer.description = description.str();
-      std::size_t count[3] = {0, 0, 0};
-      std::vector<double> H, Kg, radius;
-      for(const CAS3::Point_curvature<K>& c : curvatures)
-      {
-        ++count[c.source];
-        H.push_back(c.mean_curvature);
-        Kg.push_back(c.gaussian_curvature);
-        if(std::isfinite(c.radius))
-          radius.push_back(c.radius);
-      }
       cas3::add_layer_to_surface(written, layer);
       if(o.csv)
       {
@@ -512,14 +502,7 @@ int run(const Options& o)
         if(!csv)
           throw Failure("cannot write into the output directory " + o.output);
       }
-      std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
-      char row[160];
-      const double n = double(points.size());
-      std::snprintf(row, sizeof row, "%-12s %10.4g %10.1f%% %7.1f%% %8.1f%% %14.4g", layer.label.c_str(), a,
-                    100.0 * double(count[CAS3::SURFACE_VERTEX]) / n,
-                    100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / n, 100.0 * double(count[CAS3::NO_VALUE]) / n,
-                    radius.empty() ? std::nan("") : radius[radius.size() / 2]);
-      summary << row << "  " << cas3::quantiles(H) << "  " << cas3::quantiles(Kg) << "\n";
+      summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
       progress("layer " + layer.label + ": curvature estimated");
       layers.push_back(std::move(layer));
     }

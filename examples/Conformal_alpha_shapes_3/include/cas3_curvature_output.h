@@ -155,6 +155,34 @@ inline std::string quantiles(std::vector<double> values)
   return text;
 }
 
+// The summary line of a layer: its label and scale, the shares of points
+// with their own vertex, the nearest surface point and no value, the
+// median radius, and the 5%, 50% and 95% quantiles of H and K.
+template <class Kernel>
+std::string summary_row(const std::string& label, double a,
+                        const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  std::size_t count[3] = {0, 0, 0};
+  std::vector<double> H, K, radius;
+  for(const CAS3::Point_curvature<Kernel>& c : curvatures)
+  {
+    ++count[c.source];
+    H.push_back(c.mean_curvature);
+    K.push_back(c.gaussian_curvature);
+    if(std::isfinite(c.radius))
+      radius.push_back(c.radius);
+  }
+  if(!radius.empty())
+    std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
+  const double n = double(curvatures.size());
+  char row[160];
+  std::snprintf(row, sizeof row, "%-12s %10.4g %10.1f%% %7.1f%% %8.1f%% %14.4g", label.c_str(), a,
+                100.0 * double(count[CAS3::SURFACE_VERTEX]) / n, 100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / n,
+                100.0 * double(count[CAS3::NO_VALUE]) / n, radius.empty() ? std::nan("") : radius[radius.size() / 2]);
+  return row + std::string("  ") + quantiles(H) + "  " + quantiles(K);
+}
+
 } // namespace cas3
 
 #endif // CAS3_CURVATURE_OUTPUT_H
