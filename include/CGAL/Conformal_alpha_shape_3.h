@@ -519,10 +519,7 @@ public:
   OutputIterator get_conformal_alpha_shape_cells(OutputIterator out, Classification_type type,
                                                  const FT& alpha) const
   {
-    for(Cell_handle c : this->finite_cell_handles())
-      if(classify(c, alpha) == type)
-        *out++ = c;
-    return out;
+    return copy_classified(this->finite_cell_handles(), out, type, alpha);
   }
 
   /// Writes the finite facets of classification `type` at `alpha`, each once.
@@ -533,10 +530,7 @@ public:
   OutputIterator get_conformal_alpha_shape_facets(OutputIterator out, Classification_type type,
                                                   const FT& alpha) const
   {
-    for(const Facet& f : this->finite_facets())
-      if(classify(f, alpha) == type)
-        *out++ = f;
-    return out;
+    return copy_classified(this->finite_facets(), out, type, alpha);
   }
 
   /// Writes the finite edges of classification `type` at `alpha`, each once.
@@ -547,10 +541,7 @@ public:
   OutputIterator get_conformal_alpha_shape_edges(OutputIterator out, Classification_type type,
                                                  const FT& alpha) const
   {
-    for(const Edge& e : this->finite_edges())
-      if(classify(e, alpha) == type)
-        *out++ = e;
-    return out;
+    return copy_classified(this->finite_edges(), out, type, alpha);
   }
 
   /// Writes the finite vertices of classification `type` at `alpha`.
@@ -561,10 +552,7 @@ public:
   OutputIterator get_conformal_alpha_shape_vertices(OutputIterator out, Classification_type type,
                                                     const FT& alpha) const
   {
-    for(Vertex_handle v : this->finite_vertex_handles())
-      if(classify(v, alpha) == type)
-        *out++ = v;
-    return out;
+    return copy_classified(this->finite_vertex_handles(), out, type, alpha);
   }
 
   /// The number of connected components of the `INTERIOR` cells at `alpha`,
@@ -600,6 +588,18 @@ public:
   /// @}
 
 private:
+  // the simplices of `range` (cells, facets, edges or vertices) of
+  // classification `type` at `alpha`
+  template <class Range, class OutputIterator>
+  OutputIterator copy_classified(const Range& range, OutputIterator out, Classification_type type,
+                                 const FT& alpha) const
+  {
+    for(const auto& simplex : range)
+      if(classify(simplex, alpha) == type)
+        *out++ = simplex;
+    return out;
+  }
+
   typedef Conformal_alpha_shapes_3::internal::Pole<Cell_handle> Pole;
 
   // The three values at which a simplex changes class, as in Alpha_shape_3:
