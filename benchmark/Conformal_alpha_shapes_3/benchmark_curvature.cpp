@@ -132,17 +132,14 @@ Errors jet(const Surface& s, int rings, int degree)
 {
   typedef CGAL::Monge_via_jet_fitting<K> Fitting;
   std::vector<double> H, Kv;
-  std::vector<Vertex> ring;
+  const CAS3::internal::Vertex_graph graph =
+    CAS3::internal::vertex_graph(s.mesh, s.mesh.points(), get(CGAL::vertex_index, s.mesh));
+  CAS3::internal::Nested_neighborhood_search search(graph.size());
   for(Vertex v : s.mesh.vertices())
   {
-    std::vector<std::size_t> stamp(s.mesh.number_of_vertices(), 0);
-    CAS3::internal::collect_rings(v, s.mesh, rings, [&](Vertex u) {
-      if(stamp[u.idx()]) return false;
-      stamp[u.idx()] = 1;
-      return true;
-    }, ring);
+    search.rings(graph, v.idx(), std::size_t(rings));
     std::vector<Point> pts = {s.mesh.point(v)};
-    for(Vertex u : ring) pts.push_back(s.mesh.point(u));
+    for(std::size_t u : search.vertices()) pts.push_back(s.mesh.point(Vertex(u)));
     if(pts.size() < std::size_t((degree + 1) * (degree + 2) / 2))
     {
       H.push_back(NAN); Kv.push_back(NAN);

@@ -5,7 +5,7 @@
 //
 //   benchmark_pipeline [--sizes 100000,300000,1000000] [--surfaces noisy,clean]
 //                      [--csv FILE] [--time-limit SECONDS] [--jet-max N] [--no-jet]
-//                      [--no-split] [--no-bunny] [--program PATH] [--tmp DIR] [FILE...]
+//                      [--no-bunny] [--program PATH] [--tmp DIR] [FILE...]
 //
 // Inputs: an ellipsoid with semi-axes 1, 0.7, 0.4 sampled uniformly in area
 // (cas3_analytic_surfaces.h), clean, and noisy (Gaussian noise of 0.1 x the
@@ -31,10 +31,8 @@
 //              filling) and the program's layer with its summary statistics,
 //              the surface PLY with the layers, and the binary PLY point
 //              cloud, through the program's writer (cas3_curvature_output.h;
-//              reading an input file is not timed). With the split (default), after the job the
-//              curvature fits alone (estimate_vertex_curvatures on a copy of
-//              the surface, as estimate_curvatures calls it): the nearest-
-//              surface filling is the difference.
+//              reading an input file is not timed). The curvature of all
+//              neighbourhoods is one stage: one search per vertex serves them all.
 //   program    (--program PATH) the conformal_curvature binary on the
 //              points written as .xyz, timed from outside (wall; processor
 //              time and peak memory from wait4); it also reads the text file.
@@ -109,7 +107,7 @@ struct Options
   std::string tmp;
   double time_limit = 900;
   std::size_t jet_max = 3000000;
-  bool jet = true, split = true, bunny = true;
+  bool jet = true, bunny = true;
 };
 
 std::vector<std::string> split_list(const std::string& s)
@@ -144,12 +142,11 @@ Options parse(int argc, char* argv[])
     else if(arg == "--time-limit") o.time_limit = std::stod(value());
     else if(arg == "--jet-max") o.jet_max = std::stoul(value());
     else if(arg == "--no-jet") o.jet = false;
-    else if(arg == "--no-split") o.split = false;
     else if(arg == "--no-bunny") o.bunny = false;
     else if(arg == "--help" || arg == "-h")
     {
       std::cout << "benchmark_pipeline [--sizes N,N,...] [--surfaces noisy,clean] [--csv FILE]\n"
-                   "  [--time-limit SECONDS] [--jet-max N] [--no-jet] [--no-split] [--no-bunny]\n"
+                   "  [--time-limit SECONDS] [--jet-max N] [--no-jet] [--no-bunny]\n"
                    "  [--program PATH] [--tmp DIR] [FILE...]\n";
       std::exit(EXIT_SUCCESS);
     }
@@ -405,7 +402,7 @@ void measure_parts(Child_meter& m, const Input& in)
   });
 }
 
-void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, bool split)
+void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
 {
   const std::vector<Point>& points = in.points;
   const fs::path dir = fs::path(tmp) / ("benchmark_pipeline_" + std::to_string(::getpid()));
@@ -438,20 +435,21 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, b
     written = cas3::surface_at_input_points(surface, points);
     return std::string();
   });
-  for(const CAS3::Neighborhood& neighborhood : neighborhoods)
+  std::vector<std::vector<CAS3::Point_curvature<K> > > curvatures;
+  m.stage("estimate_curvatures (" + std::to_string(neighborhoods.size()) + " neighbourhoods)", "stage", [&] {
+    curvatures = analysis->estimate_curvatures(surface, neighborhoods, CAS3::QUADRIC_FIT);
+    return std::string();
+  });
+  for(std::size_t r = 0; r < neighborhoods.size(); ++r)
   {
-    std::vector<CAS3::Point_curvature<K> > curvatures;
-    m.stage("estimate_curvatures " + neighborhood.label(), "stage", [&] {
-      curvatures = analysis->estimate_curvatures(surface, neighborhood, CAS3::QUADRIC_FIT);
-      return std::string();
-    });
+    const CAS3::Neighborhood& neighborhood = neighborhoods[r];
     m.stage("program: layer " + neighborhood.label() + " (summary, surface properties)", "stage", [&] {
-      cas3::Layer layer(curvatures);
+      cas3::Layer layer(curvatures[r]);
       layer.label = neighborhood.label();
       layer.description = "a = " + number(a) + " (auto), " + neighborhood.label();
       cas3::add_layer_to_surface(written, layer);
       layers.push_back(std::move(layer));
-      return cas3::summary_row(neighborhood.label(), a, curvatures);
+      return cas3::summary_row(neighborhood.label(), a, curvatures[r]);
     });
   }
   m.stage("write surface PLY (binary, 5 layers, colours)", "stage", [&] {
@@ -476,47 +474,6 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp, b
   m.total("default job (sum of the stages)");
   std::error_code ignored;
   fs::remove_all(dir, ignored);
-  if(!split)
-    return;
-  // The curvature fits alone, as estimate_curvatures calls them, on a copy
-  // of the surface: estimate_curvatures less this is the nearest-surface
-  // filling (and the property copies).
-  for(const CAS3::Neighborhood& neighborhood : neighborhoods)
-  {
-    Analysis::Surface copy = surface;
-    m.stage("  of which the fits (estimate_vertex_curvatures) " + neighborhood.label(), "extra", [&] {
-      auto normal = copy.add_property_map<Analysis::Surface_vertex, Vector>("v:normal").first;
-      auto mean = copy.add_property_map<Analysis::Surface_vertex, double>("v:mean_curvature").first;
-      auto gaussian = copy.add_property_map<Analysis::Surface_vertex, double>("v:gaussian_curvature").first;
-      auto used_radius = copy.add_property_map<Analysis::Surface_vertex, double>("v:radius").first;
-      auto principal = get(CGAL::dynamic_vertex_property_t<CAS3::Principal_curvatures_and_directions<K> >(), copy);
-      auto outputs = CAS3::parameters::vertex_mean_curvature_map(mean,
-                     CAS3::parameters::vertex_Gaussian_curvature_map(gaussian,
-                     CAS3::parameters::vertex_principal_curvatures_and_directions_map(principal,
-                     CAS3::parameters::vertex_neighborhood_radius_map(used_radius,
-                       CAS3::parameters::estimator(CAS3::QUADRIC_FIT)))))
-                       .vertex_normal_map(normal);
-      switch(neighborhood.kind())
-      {
-        case CAS3::Neighborhood::RINGS:
-          CAS3::estimate_vertex_curvatures(copy, CAS3::parameters::ring_size(int(neighborhood.value()), outputs));
-          break;
-        case CAS3::Neighborhood::RADIUS:
-        case CAS3::Neighborhood::SPACINGS:
-          CAS3::estimate_vertex_curvatures(copy,
-            CAS3::parameters::neighborhood_radius(analysis->radius(neighborhood), outputs));
-          break;
-        case CAS3::Neighborhood::AUTOMATIC:
-        {
-          std::vector<double> radii = CAS3::Neighborhood::automatic_radii();
-          for(double& r : radii) r *= analysis->noise().spacing;
-          CAS3::estimate_vertex_curvatures(copy, CAS3::parameters::neighborhood_radii(radii, outputs));
-          break;
-        }
-      }
-      return std::string();
-    });
-  }
 }
 
 // The program binary on the points written as .xyz.
@@ -632,7 +589,7 @@ void run(const Options& o, std::ofstream& csv, const Input& in)
   std::vector<Record> records;
   auto add = [&](const std::vector<Record>& more) { records.insert(records.end(), more.begin(), more.end()); };
   add(in_child("delaunay", o.time_limit, [&](Child_meter& m) { measure_delaunay(m, in); }));
-  add(in_child("pipeline", o.time_limit, [&](Child_meter& m) { measure_pipeline(m, in, o.tmp, o.split); }));
+  add(in_child("pipeline", o.time_limit, [&](Child_meter& m) { measure_pipeline(m, in, o.tmp); }));
   add(in_child("parts", o.time_limit, [&](Child_meter& m) { measure_parts(m, in); }));
   if(o.jet && in.points.size() <= o.jet_max)
     add(in_child("jet", o.time_limit, [&](Child_meter& m) { measure_jet(m, in); }));

@@ -480,10 +480,12 @@ int run(const Options& o)
             << " closed, " << report.number_of_open_parts() << " open), "
             << report.number_of_points_off_surface << " points off the surface\n";
     Analysis::Surface written = cas3::surface_at_input_points(surface, points);
-    for(const CAS3::Neighborhood& neighborhood : o.neighborhoods)
+    const std::vector<std::vector<CAS3::Point_curvature<K> > > by_neighborhood =
+      analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);
+    for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
     {
-      const std::vector<CAS3::Point_curvature<K> > curvatures =
-        analysis->estimate_curvatures(surface, neighborhood, o.estimator);
+      const CAS3::Neighborhood& neighborhood = o.neighborhoods[r];
+      const std::vector<CAS3::Point_curvature<K> >& curvatures = by_neighborhood[r];
       cas3::Layer layer(curvatures);
       layer.label = (o.scales.size() > 1 ? file_label(scale) + "_" : std::string()) + neighborhood.label();
       std::ostringstream description;

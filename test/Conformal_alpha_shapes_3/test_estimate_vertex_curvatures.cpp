@@ -9,6 +9,7 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
+#include <CGAL/tags.h>
 
 #include "cas3_test_meshes.h"
 
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -326,4 +328,102 @@ BOOST_AUTO_TEST_CASE(combined_named_parameters)
   BOOST_TEST(CAS3::estimate_vertex_curvatures(mesh, np) == 0u);
   for(auto v : mesh.vertices())
     BOOST_TEST(h_map[v] == 0.5, boost::test_tools::tolerance(0.02));
+}
+
+namespace {
+
+// Every output of one run at every vertex of `mesh`, as bits: two runs
+// agree when these are equal.
+template <class ConcurrencyTag, class NamedParameters>
+std::vector<double> all_outputs(const Surface_mesh& mesh, const NamedParameters& neighborhood)
+{
+  auto n_map = get(CGAL::dynamic_vertex_property_t<Vector>(), mesh);
+  auto h_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  auto k_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  auto r_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  auto p_map = get(CGAL::dynamic_vertex_property_t<Principal>(), mesh);
+  CAS3::estimate_vertex_curvatures<ConcurrencyTag>(mesh,
+    CAS3::parameters::vertex_mean_curvature_map(h_map,
+    CAS3::parameters::vertex_Gaussian_curvature_map(k_map,
+    CAS3::parameters::vertex_principal_curvatures_and_directions_map(p_map,
+    CAS3::parameters::vertex_neighborhood_radius_map(r_map, neighborhood)))).vertex_normal_map(n_map));
+  std::vector<double> out;
+  for(auto v : mesh.vertices())
+  {
+    const Principal p = get(p_map, v);
+    for(const Vector& w : {get(n_map, v), p.max_direction, p.min_direction})
+      out.insert(out.end(), {w.x(), w.y(), w.z()});
+    out.insert(out.end(), {get(h_map, v), get(k_map, v), get(r_map, v), p.max_curvature, p.min_curvature});
+  }
+  return out;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// A rough sphere: the irregular sphere with its vertices moved along the
+// radius by up to 1% (so that the automatic radius has noise to weigh).
+Surface_mesh rough_sphere(std::size_t n)
+{
+  Surface_mesh mesh;
+  cas3_test::irregular_sphere<Surface_mesh, Point>(n, 1.0, mesh);
+  for(auto v : mesh.vertices())
+  {
+    const double bump = 1 + 0.01 * std::sin(1e3 * double(v.idx()));
+    mesh.point(v) = CGAL::ORIGIN + bump * (mesh.point(v) - CGAL::ORIGIN);
+  }
+  return mesh;
+}
+
+} // namespace
+
+// The parallel run (TBB's threads when CGAL_LINKED_WITH_TBB, else serial)
+// gives the same bits as the serial run, for every kind of neighbourhood.
+BOOST_AUTO_TEST_CASE(parallel_run_matches_the_serial_run_bit_for_bit)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  BOOST_TEST_MESSAGE("TBB: the parallel run uses threads");
+#else
+  BOOST_TEST_MESSAGE("no TBB: both runs are serial");
+#endif
+  const Surface_mesh mesh = rough_sphere(6000);
+  const std::vector<double> radii = {0.04, 0.06, 0.08, 0.12, 0.16};
+  auto check = [&](const auto& np) {
+    const std::vector<double> serial = all_outputs<CGAL::Sequential_tag>(mesh, np);
+    BOOST_TEST(same_bits(serial, all_outputs<CGAL::Parallel_if_available_tag>(mesh, np)));
+    BOOST_TEST(std::count_if(serial.begin(), serial.end(), [](double x) { return std::isfinite(x); }) > 0);
+  };
+  check(CAS3::parameters::ring_size(2));
+  check(CAS3::parameters::neighborhood_radius(0.08));
+  check(CAS3::parameters::neighborhood_radii(radii));
+}
+
+// The estimate at one vertex is the one the whole mesh gets, with a radius
+// and with candidate radii (the one-vertex search sees only the part of the
+// mesh it can reach).
+BOOST_AUTO_TEST_CASE(single_vertex_matches_the_whole_mesh_with_radii)
+{
+  const Surface_mesh mesh = rough_sphere(3000);
+  const std::vector<double> radii = {0.06, 0.09, 0.13, 0.2};
+  auto check = [&](const auto& np) {
+    auto h_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    auto r_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    CAS3::estimate_vertex_curvatures(mesh, CAS3::parameters::vertex_mean_curvature_map(h_map,
+                                             CAS3::parameters::vertex_neighborhood_radius_map(r_map, np)));
+    auto h_one = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    auto r_one = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+    for(auto v : mesh.vertices())
+    {
+      if(v.idx() % 97 != 0)
+        continue;
+      BOOST_TEST(CAS3::estimate_vertex_curvatures(v, mesh, CAS3::parameters::vertex_mean_curvature_map(h_one,
+                                                         CAS3::parameters::vertex_neighborhood_radius_map(r_one, np))));
+      BOOST_TEST(get(h_one, v) == get(h_map, v));
+      BOOST_TEST(get(r_one, v) == get(r_map, v));
+    }
+  };
+  check(CAS3::parameters::neighborhood_radius(0.1));
+  check(CAS3::parameters::neighborhood_radii(radii));
 }

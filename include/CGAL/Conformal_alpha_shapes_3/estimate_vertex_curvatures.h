@@ -10,21 +10,23 @@
 // runs on them; the fits themselves are in internal/curvature_fits.h.
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/surface_neighborhoods.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
-#include <queue>
 #include <stdexcept>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -68,9 +70,11 @@ enum Curvature_estimator
 
 namespace internal {
 
-// The vertex type of a mesh; no type for a parameter pack, so that the
-// single-vertex overload drops out of `estimate_vertex_curvatures(mesh, np)`.
-template <typename PolygonMesh, bool = Is_named_function_parameters<PolygonMesh>::value>
+// The vertex type of a mesh; no type for a parameter pack or a concurrency
+// tag, so that the single-vertex overload drops out of
+// `estimate_vertex_curvatures(mesh, np)` and `estimate_vertex_curvatures<Tag>(mesh, np)`.
+template <typename PolygonMesh, bool = Is_named_function_parameters<PolygonMesh>::value
+                                       || std::is_base_of<CGAL::Sequential_tag, PolygonMesh>::value>
 struct Vertex_of { typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor type; };
 template <typename PolygonMesh>
 struct Vertex_of<PolygonMesh, true> {};
@@ -81,12 +85,6 @@ inline Vec3 nan_vector()
   return Vec3(nan, nan, nan);
 }
 
-template <typename Point>
-Vec3 to_vec3(const Point& p)
-{
-  return Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-}
-
 // Chen-Wu vertex normal (the manual, section "Curvature"): unit face normals weighted by the inverse
 // distance from the vertex to the face centroid. Faces of zero area are
 // skipped; NaN when no face is left.
@@ -94,6 +92,8 @@ template <typename PolygonMesh, typename VPM>
 Vec3 chen_wu_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                     const PolygonMesh& pmesh, const VPM& vpm)
 {
+  if(halfedge(v, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge())
+    return nan_vector();
   Vec3 sum = Vec3::Zero();
   const Vec3 p = to_vec3(get(vpm, v));
   for(auto h : CGAL::halfedges_around_target(halfedge(v, pmesh), pmesh))
@@ -114,71 +114,6 @@ Vec3 chen_wu_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor
   return len > 0 ? Vec3(sum / len) : nan_vector();
 }
 
-// Collects the vertices at most `rings` edges away from v, v excluded.
-// `mark(u)` returns true the first time it is called for u.
-template <typename PolygonMesh, typename Mark>
-void collect_rings(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                   const PolygonMesh& pmesh, int rings, Mark mark,
-                   std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& out)
-{
-  out.clear();
-  mark(v);
-  std::size_t begin = 0;
-  std::size_t end = 0;
-  out.push_back(v);  // the frontier starts at v; v is removed at the end
-  for(int r = 0; r < rings; ++r)
-  {
-    begin = (r == 0) ? 0 : end;
-    end = out.size();
-    for(std::size_t i = begin; i < end; ++i)
-    {
-      if(halfedge(out[i], pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge())
-        continue;
-      for(auto u : CGAL::vertices_around_target(out[i], pmesh))
-        if(mark(u))
-          out.push_back(u);
-    }
-    if(out.size() == end)
-      break;
-  }
-  out.erase(out.begin());
-}
-
-// The vertices connected to v inside the ball of radius `radius` around it
-// (v excluded), nearest first, with their distances: a search that always
-// expands the nearest vertex not yet expanded, so that every prefix of the
-// result within a smaller radius r is exactly the part connected to v inside
-// the ball of radius r. `mark(u)` returns true the first time it is called for u.
-template <typename PolygonMesh, typename VPM, typename Mark>
-void collect_ball(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                  const PolygonMesh& pmesh, const VPM& vpm, double radius, Mark mark,
-                  std::vector<std::pair<double, typename boost::graph_traits<PolygonMesh>::vertex_descriptor> >& out)
-{
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef std::pair<double, vertex_descriptor> Entry;
-  auto farther = [](const Entry& a, const Entry& b) { return a.first > b.first; };
-  std::priority_queue<Entry, std::vector<Entry>, decltype(farther)> queue(farther);
-  const Vec3 p = to_vec3(get(vpm, v));
-  out.clear();
-  mark(v);
-  queue.push(Entry(0, v));
-  while(!queue.empty())
-  {
-    const Entry e = queue.top();
-    queue.pop();
-    if(e.second != v)
-      out.push_back(e);
-    if(halfedge(e.second, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge())
-      continue;
-    for(vertex_descriptor u : CGAL::vertices_around_target(e.second, pmesh))
-    {
-      const double d = (to_vec3(get(vpm, u)) - p).norm();
-      if(d <= radius && mark(u))
-        queue.push(Entry(d, u));
-    }
-  }
-}
-
 // Which neighbours a fit uses (see `estimate_vertex_curvatures()`): a ring
 // size, a radius, or candidate radii to choose from per vertex.
 struct Neighborhood_rule
@@ -188,7 +123,7 @@ struct Neighborhood_rule
   std::vector<double> candidates;  // increasing; used when not empty
 };
 
-// The automatic neighbourhood (see `estimate_at_vertex()`): the half-width
+// The automatic neighbourhood (see `choose_by_confidence_intervals()`): the half-width
 // of the intervals of the mean curvature, in standard errors computed as if
 // the heights' errors were independent. Wide, because they are not: the
 // pipeline smooths noisy points (`denoise()`, jets of 24 to 64 neighbours)
@@ -203,159 +138,330 @@ constexpr double mean_curvature_interval_width = 10;
 // ... and how many of the smallest candidate radii measure the noise.
 constexpr std::size_t noise_measuring_radii = 4;
 
-// Buffers reused from vertex to vertex.
-template <typename PolygonMesh>
-struct Ring_buffers
+// What one rule gives at one vertex: the curvature and the radius of the
+// neighbourhood used, NaN where undefined.
+struct Vertex_estimate
 {
-  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> ring;
-  std::vector<std::pair<double, typename boost::graph_traits<PolygonMesh>::vertex_descriptor> > ball;
-  std::vector<Neighbor> neighbours;
+  Local_curvature curvature{nan_vector(), std::numeric_limits<double>::quiet_NaN(),
+                            std::numeric_limits<double>::quiet_NaN(), nan_vector(), nan_vector()};
+  double radius = std::numeric_limits<double>::quiet_NaN();
+
+  bool defined() const { return std::isfinite(curvature.k1) && std::isfinite(curvature.k2); }
 };
 
-// The estimate at one vertex, and the radius of the neighbourhood it used;
-// `normal_of(u)` gives a vertex's Chen-Wu normal.
-// A neighbourhood too small or too degenerate for the fit is widened (two
-// more rings, or the radius by 1.5 twice) before the vertex is given up
-// (NaN curvature). With candidate radii, the vertex's noise is measured from
-// the residuals of the fits at the smallest radii, and the largest radius is
-// kept whose confidence interval of the mean curvature (that noise through
-// each fit) still meets those of all smaller ones (the intersection of
-// confidence intervals rule): beyond it the fit's bias outgrows its noise.
-template <typename PolygonMesh, typename VPM, typename Normal_of, typename Mark_factory>
-bool estimate_at_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                        const PolygonMesh& pmesh, const VPM& vpm, const Neighborhood_rule& rule,
-                        Curvature_estimator estimator, Normal_of normal_of,
-                        Mark_factory new_mark, Ring_buffers<PolygonMesh>& buffers,
-                        Local_curvature& out, double& radius)
+// A fit at one of the candidate radii of the automatic rule.
+struct Candidate_fit
 {
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  out = Local_curvature{normal_of(v), nan, nan, nan_vector(), nan_vector()};
-  radius = nan;
-  if(!std::isfinite(out.normal.x()))
-    return false;
+  Local_curvature curvature;
+  Quadric_fit_error error;
+  double radius;
+};
 
-  const Vec3 p = to_vec3(get(vpm, v));
-  std::vector<Neighbor>& nbrs = buffers.neighbours;
-  auto add = [&](vertex_descriptor u) {
-    const Vec3 offset = to_vec3(get(vpm, u)) - p;
-    if(!(offset.squaredNorm() > 0))
-      return;  // a coincident vertex carries no direction
-    double kn = 0;
-    if(estimator != QUADRIC_FIT)
-    {
-      const Vec3 n_u = normal_of(u);
-      if(!std::isfinite(n_u.x()))
-        return;
-      kn = normal_curvature(offset, out.normal, n_u);
-    }
-    nbrs.push_back(Neighbor{offset, kn});
-  };
-  auto fit = [&](Local_curvature& result, Quadric_fit_error* error) {
-    bool ok = false;
-    switch(estimator)
-    {
-      case PAPER_EULER_FIT:         ok = paper_euler_fit(out.normal, nbrs, result); break;
-      case EULER_LEAST_SQUARES_FIT: ok = euler_least_squares_fit(out.normal, nbrs, result); break;
-      case QUADRIC_FIT:             ok = quadric_fit(out.normal, nbrs, result, error); break;
-    }
-    return ok && std::isfinite(result.k1) && std::isfinite(result.k2);
-  };
-  Local_curvature result;
-
-  if(!rule.candidates.empty())
+// The automatic neighbourhood: the vertex's noise is measured from the
+// residual variances of the fits at the smallest candidate radii,
+// s^2(r) = sigma^2 + beta r^6 (the noise, and the cubic terms that a
+// quadric misses), fitted by least squares weighted by their inverse
+// variances (degrees of freedom / s^4), sigma^2 kept between 0 and the
+// widest of these variances (clean samples read about 0: their residuals
+// grow as r^3); then the largest radius is kept whose confidence interval
+// of the mean curvature (that noise through each fit) still meets those of
+// all smaller ones (the intersection of confidence intervals rule): beyond
+// it the fit's bias outgrows its noise. `fits` holds the defined fits, by
+// increasing radius; at least one.
+inline Vertex_estimate choose_by_confidence_intervals(const std::vector<Candidate_fit>& fits)
+{
+  const std::size_t measuring = (std::min)(fits.size(), noise_measuring_radii);
+  double s00 = 0, s01 = 0, s11 = 0, t0 = 0, t1 = 0;
+  for(std::size_t i = 0; i < measuring; ++i)
   {
-    collect_ball(v, pmesh, vpm, rule.candidates.back(), new_mark(), buffers.ball);
-    nbrs.clear();
-    // the fit at every candidate radius, smallest first
+    const Quadric_fit_error& e = fits[i].error;
+    if(!(e.degrees_of_freedom >= 1) || !std::isfinite(e.noise))
+      continue;
+    const double s2 = e.noise * e.noise;
+    const double x = std::pow(fits[i].radius / fits[0].radius, 6);
+    const double w = e.degrees_of_freedom / (s2 * s2 + (std::numeric_limits<double>::min)());
+    s00 += w;
+    s01 += w * x;
+    s11 += w * x * x;
+    t0 += w * s2;
+    t1 += w * s2 * x;
+  }
+  const double det = s00 * s11 - s01 * s01;
+  const double widest = fits[measuring - 1].error.noise * fits[measuring - 1].error.noise;
+  double noise2 = det > 0 ? (t0 * s11 - t1 * s01) / det : widest;
+  noise2 = std::isfinite(widest) ? (std::min)((std::max)(noise2, 0.), widest) : (std::max)(noise2, 0.);
+  const double noise = std::sqrt(noise2);
+  Vertex_estimate chosen;
+  double low = -std::numeric_limits<double>::infinity(), high = -low;
+  for(std::size_t i = 0; i < fits.size(); ++i)
+  {
+    const double H = (fits[i].curvature.k1 + fits[i].curvature.k2) / 2;
+    const double se = noise * fits[i].error.per_noise;
+    low = (std::max)(low, H - mean_curvature_interval_width * se);
+    high = (std::min)(high, H + mean_curvature_interval_width * se);
+    if(i > 0 && !(low <= high))
+      break;
+    chosen.curvature = fits[i].curvature;
+    chosen.radius = fits[i].radius;
+  }
+  return chosen;
+}
+
+// The estimates of several neighbourhood rules at every vertex, sharing
+// one search per vertex: the radii of all rules (fixed ones and
+// candidates) are nested balls found by one search, the ring sizes nested
+// rings found by another, and each fit runs on a prefix of what the search
+// found. A neighbourhood too small or too degenerate for the fit is widened
+// (two more rings, or the radius by 1.5 twice) before the vertex is given
+// up (NaN).
+class Curvature_estimation
+{
+public:
+  // Per thread: the searches and the fit's buffers.
+  struct Workspace
+  {
+    explicit Workspace(std::size_t number_of_vertices) : search(number_of_vertices) {}
+    Nested_neighborhood_search search;
+    std::vector<Quadric_terms> terms;
+    std::vector<Neighbor> neighbors;
     std::vector<Local_curvature> fits;
+    std::vector<char> fitted;
     std::vector<Quadric_fit_error> errors;
-    std::vector<double> radii;
-    std::size_t used = 0;
-    for(double r : rule.candidates)
+    std::vector<Candidate_fit> candidates;
+  };
+
+  // `normals`: the Chen-Wu normal of each vertex of `graph`.
+  Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
+                       const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator)
+    : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator)
+  {
+    for(const Neighborhood_rule& rule : rules)
     {
-      for(; used < buffers.ball.size() && buffers.ball[used].first <= r; ++used)
-        add(buffers.ball[used].second);
-      Quadric_fit_error error;
-      if(!fit(result, &error))
-        continue;
-      fits.push_back(result);
-      errors.push_back(error);
-      radii.push_back(r);
+      if(!rule.candidates.empty())
+        m_radii.insert(m_radii.end(), rule.candidates.begin(), rule.candidates.end());
+      else if(rule.radius > 0)
+        m_radii.push_back(rule.radius);
+      else
+        m_rings = (std::max)(m_rings, std::size_t(rule.rings) + 2);
     }
-    if(fits.empty())
-      return false;
-    // the noise of the heights: the residual variances of the fits at the
-    // smallest radii, s^2(r) = sigma^2 + beta r^6 (the noise, and the cubic
-    // terms that a quadric misses), fitted by least squares weighted by their
-    // inverse variances (degrees of freedom / s^4), sigma^2 kept between 0
-    // and the widest of these variances. Clean samples read about 0: their
-    // residuals grow as r^3.
-    const std::size_t measuring = (std::min)(fits.size(), noise_measuring_radii);
-    double s00 = 0, s01 = 0, s11 = 0, t0 = 0, t1 = 0;
-    for(std::size_t i = 0; i < measuring; ++i)
-    {
-      const Quadric_fit_error& e = errors[i];
-      if(!(e.degrees_of_freedom >= 1) || !std::isfinite(e.noise))
-        continue;
-      const double s2 = e.noise * e.noise;
-      const double x = std::pow(radii[i] / radii[0], 6);
-      const double w = e.degrees_of_freedom / (s2 * s2 + (std::numeric_limits<double>::min)());
-      s00 += w;
-      s01 += w * x;
-      s11 += w * x * x;
-      t0 += w * s2;
-      t1 += w * s2 * x;
-    }
-    const double det = s00 * s11 - s01 * s01;
-    const double widest = errors[measuring - 1].noise * errors[measuring - 1].noise;
-    double noise2 = det > 0 ? (t0 * s11 - t1 * s01) / det : widest;
-    noise2 = std::isfinite(widest) ? (std::min)((std::max)(noise2, 0.), widest) : (std::max)(noise2, 0.);
-    const double noise = std::sqrt(noise2);
-    // the intersection of confidence intervals, from the smallest radius up
-    double low = -std::numeric_limits<double>::infinity(), high = -low;
-    for(std::size_t i = 0; i < fits.size(); ++i)
-    {
-      const double H = (fits[i].k1 + fits[i].k2) / 2;
-      const double se = noise * errors[i].per_noise;
-      low = (std::max)(low, H - mean_curvature_interval_width * se);
-      high = (std::min)(high, H + mean_curvature_interval_width * se);
-      if(i > 0 && !(low <= high))
-        break;
-      out = fits[i];
-      radius = radii[i];
-    }
-    return true;
+    std::sort(m_radii.begin(), m_radii.end());
+    m_radii.erase(std::unique(m_radii.begin(), m_radii.end()), m_radii.end());
+    m_with_error.assign(m_radii.size(), 0);
+    for(const Neighborhood_rule& rule : rules)
+      for(double r : rule.candidates)
+        m_with_error[radius_level(r)] = 1;
   }
 
-  for(int widening = 0; widening <= 2; ++widening)
+  Workspace make_workspace() const { return Workspace(m_graph.size()); }
+
+  // The estimates at vertex v, one per rule, into out[0, rules.size()).
+  void estimate(std::size_t v, Workspace& ws, Vertex_estimate* out) const
   {
-    nbrs.clear();
-    double reach = 0;
-    if(rule.radius > 0)
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
+      out[r] = Vertex_estimate();
+    const Vec3& n = m_normals[v];
+    if(!std::isfinite(n.x()))
+      return;
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
+      out[r].curvature.normal = n;
+    if(!m_radii.empty())
+      estimate_in_balls(v, ws, out);
+    if(m_rings > 0)
+      estimate_in_rings(v, ws, out);
+  }
+
+private:
+  std::size_t radius_level(double r) const
+  {
+    return std::size_t(std::lower_bound(m_radii.begin(), m_radii.end(), r) - m_radii.begin());
+  }
+
+  // The terms of the fit for each vertex the search found, in coordinates
+  // divided by `length`; coincident vertices carry no direction and are
+  // left out (`kept` counts, per level, those of that level and below).
+  void prepare(std::size_t v, const Tangent_frame& f, double length, std::size_t levels, Workspace& ws,
+               std::vector<std::size_t>& kept) const
+  {
+    const Vec3& p = m_graph.points[v];
+    const std::vector<std::size_t>& found = ws.search.vertices();
+    const std::vector<double>& distance = ws.search.distances();
+    ws.terms.clear();
+    ws.neighbors.clear();
+    kept.assign(levels, 0);
+    std::size_t level = 0;
+    for(std::size_t k = 0; k < found.size(); ++k)
     {
-      reach = rule.radius * std::pow(1.5, widening);
-      collect_ball(v, pmesh, vpm, reach, new_mark(), buffers.ball);
-      for(const auto& entry : buffers.ball)
-        add(entry.second);
+      while(ws.search.end(level) <= k)
+        kept[level++] = count(ws);
+      if(!(distance[k] > 0))
+        continue;
+      const Vec3 offset = m_graph.points[found[k]] - p;
+      if(m_estimator == QUADRIC_FIT)
+      {
+        const Vec3 o = offset / length;
+        ws.terms.emplace_back(o.dot(f.e1), o.dot(f.e2), o.dot(f.n), distance[k] * distance[k]);
+        continue;
+      }
+      const Vec3& n_u = m_normals[found[k]];
+      if(std::isfinite(n_u.x()))
+        ws.neighbors.push_back(Neighbor{offset, normal_curvature(offset, f.n, n_u)});
     }
+    for(; level < levels; ++level)
+      kept[level] = count(ws);
+  }
+
+  std::size_t count(const Workspace& ws) const
+  {
+    return m_estimator == QUADRIC_FIT ? ws.terms.size() : ws.neighbors.size();
+  }
+
+  // The fit over the first `count` prepared neighbours, fading at `fade`.
+  bool fit(const Tangent_frame& f, std::size_t count, double fade, double length, Workspace& ws,
+           Local_curvature& out, Quadric_fit_error* error) const
+  {
+    bool ok = false;
+    if(m_estimator == QUADRIC_FIT)
+      ok = quadric_fit(f, ws.terms.data(), count, fade, length, out, error);
     else
     {
-      collect_rings(v, pmesh, rule.rings + widening, new_mark(), buffers.ring);
-      for(vertex_descriptor u : buffers.ring)
+      const std::vector<Neighbor> prefix(ws.neighbors.begin(), ws.neighbors.begin() + std::ptrdiff_t(count));
+      ok = m_estimator == PAPER_EULER_FIT ? paper_euler_fit(f.n, prefix, out)
+                                          : euler_least_squares_fit(f.n, prefix, out);
+    }
+    return ok && std::isfinite(out.k1) && std::isfinite(out.k2);
+  }
+
+  void estimate_in_balls(std::size_t v, Workspace& ws, Vertex_estimate* out) const
+  {
+    const Tangent_frame f = frame_from_normal(m_normals[v]);
+    const double length = m_radii.back();
+    std::vector<std::size_t> kept;
+    ws.search.balls(m_graph, v, m_radii);
+    prepare(v, f, length, m_radii.size(), ws, kept);
+    ws.fits.resize(m_radii.size());
+    ws.errors.resize(m_radii.size());
+    ws.fitted.assign(m_radii.size(), 0);
+    for(std::size_t j = 0; j < m_radii.size(); ++j)
+      ws.fitted[j] = fit(f, kept[j], m_radii[j], length, ws, ws.fits[j], m_with_error[j] ? &ws.errors[j] : nullptr);
+
+    std::vector<std::size_t> to_widen;
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
+    {
+      const Neighborhood_rule& rule = m_rules[r];
+      if(!rule.candidates.empty())
       {
-        add(u);
-        reach = (std::max)(reach, (to_vec3(get(vpm, u)) - p).norm());
+        ws.candidates.clear();
+        for(double radius : rule.candidates)
+        {
+          const std::size_t j = radius_level(radius);
+          if(ws.fitted[j])
+            ws.candidates.push_back(Candidate_fit{ws.fits[j], ws.errors[j], radius});
+        }
+        if(!ws.candidates.empty())
+          out[r] = choose_by_confidence_intervals(ws.candidates);
+      }
+      else if(rule.radius > 0)
+      {
+        const std::size_t j = radius_level(rule.radius);
+        if(ws.fitted[j])
+          out[r] = Vertex_estimate{ws.fits[j], rule.radius};
+        else
+          to_widen.push_back(r);
       }
     }
-    if(fit(result, nullptr))
+    // the wider balls of the few vertices that need them, last: their
+    // searches replace the shared one
+    for(std::size_t r : to_widen)
+      for(int widening = 1; widening <= 2 && !out[r].defined(); ++widening)
+      {
+        const double radius = m_rules[r].radius * std::pow(1.5, widening);
+        ws.search.balls(m_graph, v, std::vector<double>(1, radius));
+        prepare(v, f, radius, 1, ws, kept);
+        Local_curvature c;
+        if(fit(f, kept[0], radius, radius, ws, c, nullptr))
+          out[r] = Vertex_estimate{c, radius};
+      }
+  }
+
+  // Rings up to the largest ring size plus two (the widening), fitted on
+  // each prefix; a ring's fit fades at 1.5 times the distance of its
+  // farthest neighbour, which is the radius reported.
+  void estimate_in_rings(std::size_t v, Workspace& ws, Vertex_estimate* out) const
+  {
+    const Tangent_frame f = frame_from_normal(m_normals[v]);
+    ws.search.rings(m_graph, v, m_rings);
+    const std::vector<double>& distance = ws.search.distances();
+    double length = 0;
+    for(double d : distance)
+      length = (std::max)(length, d);
+    if(!(length > 0))
+      return;
+    std::vector<std::size_t> kept;
+    prepare(v, f, length, m_rings, ws, kept);
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
     {
-      out = result;
-      radius = reach;
-      return true;
+      const Neighborhood_rule& rule = m_rules[r];
+      if(!rule.candidates.empty() || rule.radius > 0)
+        continue;
+      for(int widening = 0; widening <= 2 && !out[r].defined(); ++widening)
+      {
+        const std::size_t ring = std::size_t(rule.rings + widening) - 1;
+        double reach = 0;
+        for(std::size_t k = 0; k < ws.search.end(ring); ++k)
+          reach = (std::max)(reach, distance[k]);
+        Local_curvature c;
+        if(fit(f, kept[ring], reach, length, ws, c, nullptr))
+          out[r] = Vertex_estimate{c, reach};
+      }
     }
   }
-  return false;
+
+  const Vertex_graph& m_graph;
+  const std::vector<Vec3>& m_normals;
+  std::vector<Neighborhood_rule> m_rules;
+  Curvature_estimator m_estimator;
+  std::vector<double> m_radii;     // every rule's radii, increasing
+  std::vector<char> m_with_error;  // by radius: a candidate of an automatic rule
+  std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
+};
+
+// Estimates of every rule at every vertex of `graph`: [rule][vertex index].
+template <typename ConcurrencyTag>
+std::vector<std::vector<Vertex_estimate> > estimate_at_every_vertex(const Vertex_graph& graph,
+                                                                   const std::vector<Vec3>& normals,
+                                                                   const std::vector<Neighborhood_rule>& rules,
+                                                                   Curvature_estimator estimator)
+{
+  const Curvature_estimation estimation(graph, normals, rules, estimator);
+  std::vector<std::vector<Vertex_estimate> > by_rule(rules.size(), std::vector<Vertex_estimate>(graph.size()));
+  typedef Curvature_estimation::Workspace Workspace;
+  struct Per_thread
+  {
+    Workspace workspace;
+    std::vector<Vertex_estimate> estimates;
+  };
+  for_each_index<ConcurrencyTag>(graph.size(),
+    [&]() { return Per_thread{estimation.make_workspace(), std::vector<Vertex_estimate>(rules.size())}; },
+    [&](std::size_t v, Per_thread& thread) {
+      estimation.estimate(v, thread.workspace, thread.estimates.data());
+      for(std::size_t r = 0; r < rules.size(); ++r)
+        by_rule[r][v] = thread.estimates[r];
+    });
+  return by_rule;
+}
+
+// The Chen-Wu normal of every vertex, by vertex index.
+template <typename ConcurrencyTag, typename PolygonMesh, typename VPM, typename VertexIndexMap>
+std::vector<Vec3> chen_wu_normals(const PolygonMesh& pmesh, const VPM& vpm, const VertexIndexMap& vertex_index)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> by_index(num_vertices(pmesh));
+  for(vertex_descriptor v : vertices(pmesh))
+    by_index[get(vertex_index, v)] = v;
+  std::vector<Vec3> normals(by_index.size());
+  for_each_index<ConcurrencyTag>(by_index.size(), []() { return 0; },
+    [&](std::size_t i, int) { normals[i] = chen_wu_normal(by_index[i], pmesh, vpm); });
+  return normals;
 }
 
 template <typename PolygonMesh, typename NamedParameters>
@@ -421,15 +527,9 @@ Curvature_estimator get_estimator(const NamedParameters& np)
   return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::estimator), QUADRIC_FIT);
 }
 
-template <typename NamedParameters>
-Neighborhood_rule get_neighborhood_rule(const NamedParameters& np, Curvature_estimator estimator)
+// Throws std::invalid_argument on a rule that `estimate_vertex_curvatures()` rejects.
+inline void check_neighborhood_rule(const Neighborhood_rule& rule, Curvature_estimator estimator)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  Neighborhood_rule rule;
-  rule.rings = choose_parameter(get_parameter(np, internal_np_cas3::ring_size), 1);
-  rule.radius = choose_parameter(get_parameter(np, internal_np_cas3::neighborhood_radius), 0.);
-  rule.candidates = choose_parameter(get_parameter(np, internal_np_cas3::neighborhood_radii), std::vector<double>());
   const std::string where = "estimate_vertex_curvatures: ";
   if(rule.rings < 1)
     throw std::invalid_argument(where + "ring size " + std::to_string(rule.rings) + " is below 1");
@@ -441,6 +541,18 @@ Neighborhood_rule get_neighborhood_rule(const NamedParameters& np, Curvature_est
       throw std::invalid_argument(where + "the candidate radii must be finite, positive and increasing");
   if(!rule.candidates.empty() && estimator != QUADRIC_FIT)
     throw std::invalid_argument(where + "choosing among candidate radii needs the QUADRIC_FIT estimator");
+}
+
+template <typename NamedParameters>
+Neighborhood_rule get_neighborhood_rule(const NamedParameters& np, Curvature_estimator estimator)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Neighborhood_rule rule;
+  rule.rings = choose_parameter(get_parameter(np, internal_np_cas3::ring_size), 1);
+  rule.radius = choose_parameter(get_parameter(np, internal_np_cas3::neighborhood_radius), 0.);
+  rule.candidates = choose_parameter(get_parameter(np, internal_np_cas3::neighborhood_radii), std::vector<double>());
+  check_neighborhood_rule(rule, estimator);
   return rule;
 }
 
@@ -486,6 +598,10 @@ do not contribute to the normals. A vertex whose normal or curvature is still
 undefined (an isolated vertex, only degenerate faces, too few vertices even
 with the wider rings) gets NaN values and is counted in the return value.
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag`
+        or `CGAL::Parallel_if_available_tag`: the vertices are estimated on
+        TBB's threads with the parallel tags (which need
+        `CGAL_LINKED_WITH_TBB`); the results are the same whichever the tag.
 \tparam PolygonMesh a model of `FaceGraph` whose faces are triangles.
 \tparam NamedParameters a sequence of named parameters.
 
@@ -558,7 +674,8 @@ or candidate radii with another estimator than `QUADRIC_FIT`.
 
 \returns the number of vertices whose curvature is undefined (NaN).
 */
-template <typename PolygonMesh,
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename PolygonMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters,
           typename = typename std::enable_if<
             internal::Is_named_function_parameters<NamedParameters>::value>::type>
@@ -566,44 +683,22 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
                                        const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef internal::Curvature_maps<PolygonMesh, NamedParameters> Maps;
-  const Maps maps(np);
+  const internal::Curvature_maps<PolygonMesh, NamedParameters> maps(np);
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, pmesh));
   const Curvature_estimator estimator = internal::get_estimator<PolygonMesh>(np);
-  const internal::Neighborhood_rule rule = internal::get_neighborhood_rule(np, estimator);
-
+  const std::vector<internal::Neighborhood_rule> rules(1, internal::get_neighborhood_rule(np, estimator));
   const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
-  std::vector<internal::Vec3> normals(num_vertices(pmesh));
-  for(vertex_descriptor v : vertices(pmesh))
-    normals[get(vertex_index, v)] =
-      halfedge(v, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge()
-        ? internal::nan_vector() : internal::chen_wu_normal(v, pmesh, vpm);
-
-  // a vertex is marked in the current ring search when its stamp is current
-  std::vector<std::size_t> stamps(num_vertices(pmesh), 0);
-  std::size_t stamp = 0;
-  auto new_mark = [&]() {
-    ++stamp;
-    return [&, s = stamp](vertex_descriptor u) {
-      std::size_t& mark = stamps[get(vertex_index, u)];
-      const bool fresh = mark != s;
-      mark = s;
-      return fresh;
-    };
-  };
-
+  const internal::Vertex_graph graph = internal::vertex_graph(pmesh, vpm, vertex_index);
+  const std::vector<internal::Vec3> normals = internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index);
+  const std::vector<internal::Vertex_estimate> estimates =
+    internal::estimate_at_every_vertex<ConcurrencyTag>(graph, normals, rules, estimator).front();
   std::size_t undefined = 0;
-  internal::Local_curvature c;
-  double radius = 0;
-  internal::Ring_buffers<PolygonMesh> buffers;
   for(vertex_descriptor v : vertices(pmesh))
   {
-    if(!internal::estimate_at_vertex(v, pmesh, vpm, rule, estimator,
-                                     [&](vertex_descriptor u) { return normals[get(vertex_index, u)]; }, new_mark,
-                                     buffers, c, radius))
-      ++undefined;
-    maps.write(v, c, radius);
+    const internal::Vertex_estimate& e = estimates[get(vertex_index, v)];
+    undefined += e.defined() ? 0 : 1;
+    maps.write(v, e.curvature, e.radius);
   }
   return undefined;
 }
@@ -620,27 +715,27 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef internal::Curvature_maps<PolygonMesh, NamedParameters> Maps;
-  const Maps maps(np);
+  const internal::Curvature_maps<PolygonMesh, NamedParameters> maps(np);
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, pmesh));
-  auto normal_of = [&](vertex_descriptor u) {
-    return halfedge(u, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge()
-             ? internal::nan_vector() : internal::chen_wu_normal(u, pmesh, vpm);
-  };
-  std::unordered_set<vertex_descriptor> marked;
-  auto new_mark = [&]() {
-    marked.clear();
-    return [&marked](vertex_descriptor u) { return marked.insert(u).second; };
-  };
-  internal::Local_curvature c;
-  double radius = 0;
-  internal::Ring_buffers<PolygonMesh> buffers;
   const Curvature_estimator estimator = internal::get_estimator<PolygonMesh>(np);
-  const bool ok = internal::estimate_at_vertex(v, pmesh, vpm, internal::get_neighborhood_rule(np, estimator),
-                                               estimator, normal_of, new_mark, buffers, c, radius);
-  maps.write(v, c, radius);
-  return ok;
+  const std::vector<internal::Neighborhood_rule> rules(1, internal::get_neighborhood_rule(np, estimator));
+  // the part of the mesh the searches can reach: two rings beyond the ring
+  // size, or the widest radius (a fixed radius widens to 2.25 times itself)
+  const internal::Neighborhood_rule& rule = rules.front();
+  const double reach = rule.candidates.empty() ? 2.25 * rule.radius : rule.candidates.back();
+  std::vector<vertex_descriptor> by_index;
+  const internal::Vertex_graph graph =
+    internal::local_vertex_graph(v, pmesh, vpm, reach > 0 ? 0 : std::size_t(rule.rings) + 2, reach, by_index);
+  std::vector<internal::Vec3> normals(graph.size());
+  for(std::size_t i = 0; i < graph.size(); ++i)
+    normals[i] = internal::chen_wu_normal(by_index[i], pmesh, vpm);
+  const internal::Curvature_estimation estimation(graph, normals, rules, estimator);
+  internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
+  internal::Vertex_estimate estimate;
+  estimation.estimate(0, workspace, &estimate);
+  maps.write(v, estimate.curvature, estimate.radius);
+  return estimate.defined();
 }
 
 } // namespace Conformal_alpha_shapes_3

@@ -255,67 +255,67 @@ public:
   std::vector<Point_curvature<Kernel> > estimate_curvatures(Surface& surface, const Neighborhood& neighborhood,
                                                             Curvature_estimator estimator = QUADRIC_FIT) const
   {
-    auto normal = surface.template add_property_map<Surface_vertex, Vector>("v:normal").first;
-    auto mean = surface.template add_property_map<Surface_vertex, double>("v:mean_curvature").first;
-    auto gaussian = surface.template add_property_map<Surface_vertex, double>("v:gaussian_curvature").first;
-    auto used_radius = surface.template add_property_map<Surface_vertex, double>("v:radius").first;
-    auto principal = get(CGAL::dynamic_vertex_property_t<Principal_curvatures_and_directions<Kernel> >(), surface);
-    const Working_point_map working = working_points(surface);
-    auto outputs = parameters::vertex_mean_curvature_map(mean,
-                   parameters::vertex_Gaussian_curvature_map(gaussian,
-                   parameters::vertex_principal_curvatures_and_directions_map(principal,
-                   parameters::vertex_neighborhood_radius_map(used_radius, parameters::estimator(estimator)))))
-                     .vertex_normal_map(normal).vertex_point_map(working);
-    switch(neighborhood.kind())
+    return estimate_curvatures(surface, std::vector<Neighborhood>(1, neighborhood), estimator).front();
+  }
+
+  /*!
+  The same for several neighbourhoods at once, one result per
+  neighbourhood (in their order), the surface's properties holding the
+  last one's. Cheaper than one call per neighbourhood: each vertex's
+  neighbourhoods are found by one search, the largest, and each fit runs
+  on a part of it. With TBB (`CGAL_LINKED_WITH_TBB`) the vertices are
+  estimated in parallel, with the same results.
+  */
+  std::vector<std::vector<Point_curvature<Kernel> > >
+  estimate_curvatures(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
+                      Curvature_estimator estimator = QUADRIC_FIT) const
+  {
+    std::vector<internal::Neighborhood_rule> rules(neighborhoods.size());
+    for(std::size_t r = 0; r < neighborhoods.size(); ++r)
     {
-      case Neighborhood::RINGS:
-        estimate_vertex_curvatures(surface, parameters::ring_size(int(neighborhood.value()), outputs));
-        break;
-      case Neighborhood::RADIUS:
-      case Neighborhood::SPACINGS:
-        estimate_vertex_curvatures(surface, parameters::neighborhood_radius(working_radius(neighborhood), outputs));
-        break;
-      case Neighborhood::AUTOMATIC:
+      switch(neighborhoods[r].kind())
       {
-        std::vector<double> radii = Neighborhood::automatic_radii();
-        for(double& r : radii)
-          r *= m_noise.spacing;
-        estimate_vertex_curvatures(surface, parameters::neighborhood_radii(radii, outputs));
-        break;
+        case Neighborhood::RINGS: rules[r].rings = int(neighborhoods[r].value()); break;
+        case Neighborhood::RADIUS:
+        case Neighborhood::SPACINGS: rules[r].radius = working_radius(neighborhoods[r]); break;
+        case Neighborhood::AUTOMATIC:
+          for(double m : Neighborhood::automatic_radii())
+            rules[r].candidates.push_back(m * m_noise.spacing);
+          break;
       }
+      internal::check_neighborhood_rule(rules[r], estimator);
     }
-    auto k1 = surface.template add_property_map<Surface_vertex, double>("v:k1").first;
-    auto k2 = surface.template add_property_map<Surface_vertex, double>("v:k2").first;
-    auto d1 = surface.template add_property_map<Surface_vertex, Vector>("v:d1").first;
-    auto d2 = surface.template add_property_map<Surface_vertex, Vector>("v:d2").first;
-    std::vector<Point_curvature<Kernel> > by_vertex = values_per_vertex(surface, working, principal);
-    for(Surface_vertex v : surface.vertices())
+    const Working_point_map working = working_points(surface);
+    const auto vertex_index = get(CGAL::vertex_index, surface);
+    const internal::Vertex_graph graph = internal::vertex_graph(surface, working, vertex_index);
+    const std::vector<std::vector<internal::Vertex_estimate> > estimates =
+      internal::estimate_at_every_vertex<CGAL::Parallel_if_available_tag>(
+        graph, internal::chen_wu_normals<CGAL::Parallel_if_available_tag>(surface, working, vertex_index), rules,
+        estimator);
+
+    Nearest_surface_point nearest(*this, surface, working);
+    std::vector<std::vector<Point_curvature<Kernel> > > layers;
+    for(const std::vector<internal::Vertex_estimate>& by_surface_vertex : estimates)
     {
-      const Principal_curvatures_and_directions<Kernel> p = get(principal, v);
-      mean[v] = m_input.curvature_to_input(mean[v]);
-      gaussian[v] = m_input.gaussian_curvature_to_input(gaussian[v]);
-      used_radius[v] = m_input.length_to_input(used_radius[v]);
-      k1[v] = m_input.curvature_to_input(p.max_curvature);
-      k2[v] = m_input.curvature_to_input(p.min_curvature);
-      d1[v] = p.max_direction;
-      d2[v] = p.min_direction;
+      const std::vector<Point_curvature<Kernel> > by_vertex = values_per_vertex(surface, by_surface_vertex, nearest);
+      std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
+      for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
+      {
+        Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
+        c = in_input_units(by_vertex[m_shape.input_vertex(i)->vertex_index()]);
+        if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
+          take_other_side(c);
+      }
+      layers.push_back(std::move(per_point));
     }
-    std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
-    for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
-    {
-      Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
-      c = in_input_units(by_vertex[m_shape.input_vertex(i)->vertex_index()]);
-      if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
-        take_other_side(c);
-    }
-    return per_point;
+    if(!estimates.empty())
+      set_surface_properties(surface, estimates.back());
+    return layers;
   }
 
 private:
   typedef typename CGAL::dynamic_vertex_property_t<Point> Working_point_tag;
   typedef typename boost::property_map<Surface, Working_point_tag>::const_type Working_point_map;
-  typedef typename boost::property_map<Surface, CGAL::dynamic_vertex_property_t<
-    Principal_curvatures_and_directions<Kernel> > >::type Principal_map;
 
   // The surface's points in the working frame: the fits and the
   // nearest-surface search run there (see the class description).
@@ -332,6 +332,34 @@ private:
   {
     return neighborhood.kind() == Neighborhood::SPACINGS ? neighborhood.value() * m_noise.spacing
                                                          : m_input.length_from_input(neighborhood.value());
+  }
+
+  static Vector to_vector(const internal::Vec3& v) { return Vector(v.x(), v.y(), v.z()); }
+
+  // The surface's properties (see the class description) from the
+  // estimates at its vertices, in input units.
+  void set_surface_properties(Surface& surface, const std::vector<internal::Vertex_estimate>& estimates) const
+  {
+    auto normal = surface.template add_property_map<Surface_vertex, Vector>("v:normal").first;
+    auto mean = surface.template add_property_map<Surface_vertex, double>("v:mean_curvature").first;
+    auto gaussian = surface.template add_property_map<Surface_vertex, double>("v:gaussian_curvature").first;
+    auto used_radius = surface.template add_property_map<Surface_vertex, double>("v:radius").first;
+    auto k1 = surface.template add_property_map<Surface_vertex, double>("v:k1").first;
+    auto k2 = surface.template add_property_map<Surface_vertex, double>("v:k2").first;
+    auto d1 = surface.template add_property_map<Surface_vertex, Vector>("v:d1").first;
+    auto d2 = surface.template add_property_map<Surface_vertex, Vector>("v:d2").first;
+    for(Surface_vertex v : surface.vertices())
+    {
+      const internal::Vertex_estimate& e = estimates[v.idx()];
+      normal[v] = to_vector(e.curvature.normal);
+      k1[v] = m_input.curvature_to_input(e.curvature.k1);
+      k2[v] = m_input.curvature_to_input(e.curvature.k2);
+      mean[v] = (k1[v] + k2[v]) / 2;
+      gaussian[v] = k1[v] * k2[v];
+      used_radius[v] = m_input.length_to_input(e.radius);
+      d1[v] = to_vector(e.curvature.d1);
+      d2[v] = to_vector(e.curvature.d2);
+    }
   }
 
   // The same curvature seen from the other side of the surface: the
@@ -363,17 +391,57 @@ private:
     return c;
   }
 
-  // The values of the fits on `surface` for every vertex of the shape, in the
-  // working frame (see `estimate_curvatures()`).
-  std::vector<Point_curvature<Kernel> > values_per_vertex(const Surface& surface, const Working_point_map& working,
-                                                          const Principal_map& principal) const
+  // The nearest point of a surface to the shape's vertices, and their local
+  // spacings, for the vertices that have no value of their own (usually few
+  // or none: the search structures are built on first use).
+  class Nearest_surface_point
+  {
+  public:
+    typedef CGAL::AABB_face_graph_triangle_primitive<Surface, Working_point_map> Primitive;
+    typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
+
+    Nearest_surface_point(const Multiscale_curvatures& analysis, const Surface& surface,
+                          const Working_point_map& working)
+      : m_analysis(analysis), m_surface(surface), m_working(working)
+    {}
+
+    bool empty() const { return CGAL::is_empty(m_surface); }
+    const Working_point_map& working() const { return m_working; }
+    const Tree& tree()
+    {
+      if(m_tree.empty())
+      {
+        m_tree.insert(faces(m_surface).first, faces(m_surface).second, m_surface, m_working);
+        m_tree.accelerate_distance_queries();
+      }
+      return m_tree;
+    }
+    // the local spacing of the local-scale rule at a vertex of the shape
+    double spacing(std::size_t vertex_index)
+    {
+      if(m_spacing.empty())
+        m_spacing = internal::kth_shortest_edge_lengths<internal::Local_scale_policy::spacing_edge_rank>(
+          m_analysis.m_shape);
+      return m_spacing[vertex_index];
+    }
+
+  private:
+    const Multiscale_curvatures& m_analysis;
+    const Surface& m_surface;
+    const Working_point_map& m_working;
+    Tree m_tree;
+    std::vector<double> m_spacing;
+  };
+
+  // The values of the fits on `surface` (`estimates`, by surface vertex
+  // index) for every vertex of the shape, in the working frame (see
+  // `estimate_curvatures()`).
+  std::vector<Point_curvature<Kernel> > values_per_vertex(const Surface& surface,
+                                                          const std::vector<internal::Vertex_estimate>& estimates,
+                                                          Nearest_surface_point& nearest_point) const
   {
     auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
-    auto normal = surface.template property_map<Surface_vertex, Vector>("v:normal").first;
-    auto used_radius = surface.template property_map<Surface_vertex, double>("v:radius").first;
-    auto k1 = [&](Surface_vertex v) { return get(principal, v).max_curvature; };
-    auto d1 = [&](Surface_vertex v) { return get(principal, v).max_direction; };
-
+    auto estimate = [&](Surface_vertex v) -> const internal::Vertex_estimate& { return estimates[v.idx()]; };
     auto record = [&](Point_source source, double distance, double r, const Vector& n, double max_k, double min_k,
                       const Vector& max_d, const Vector& min_d) {
       Point_curvature<Kernel> c;
@@ -393,38 +461,26 @@ private:
     for(Surface_vertex v : surface.vertices())
     {
       Point_curvature<Kernel>& c = by_vertex[m_shape.input_vertex(m_kept_index[input_index[v]])->vertex_index()];
-      const Principal_curvatures_and_directions<Kernel> p = get(principal, v);
-      if(c.source == NO_VALUE && std::isfinite(p.max_curvature))
-        c = record(SURFACE_VERTEX, 0, used_radius[v], normal[v], p.max_curvature, p.min_curvature,
-                   p.max_direction, p.min_direction);
+      const internal::Vertex_estimate& e = estimate(v);
+      if(c.source == NO_VALUE && e.defined())
+        c = record(SURFACE_VERTEX, 0, e.radius, to_vector(e.curvature.normal), e.curvature.k1, e.curvature.k2,
+                   to_vector(e.curvature.d1), to_vector(e.curvature.d2));
     }
 
-    // the others from the nearest point of the surface (usually few or none:
-    // the search structures are built only when some point needs them)
-    typedef CGAL::AABB_face_graph_triangle_primitive<Surface, Working_point_map> Primitive;
-    typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
-    Tree tree;
-    const bool all_have_values = std::none_of(by_vertex.begin(), by_vertex.end(),
-      [](const Point_curvature<Kernel>& c) { return c.source == NO_VALUE; });
-    if(!all_have_values && !CGAL::is_empty(surface))
-    {
-      tree.insert(faces(surface).first, faces(surface).second, surface, working);
-      tree.accelerate_distance_queries();
-    }
-    // the local spacing of the local-scale rule
-    const std::vector<double> spacing =
-      tree.empty() ? std::vector<double>()
-                   : internal::kth_shortest_edge_lengths<internal::Local_scale_policy::spacing_edge_rank>(m_shape);
+    // the others from the nearest point of the surface
+    if(nearest_point.empty())
+      return by_vertex;
+    const Working_point_map& working = nearest_point.working();
     for(typename Shape::Finite_vertices_iterator vit = m_shape.finite_vertices_begin();
         vit != m_shape.finite_vertices_end(); ++vit)
     {
       Point_curvature<Kernel>& c = by_vertex[vit->vertex_index()];
-      if(c.source != NO_VALUE || tree.empty())
+      if(c.source != NO_VALUE)
         continue;
       const Point& p = vit->point();
-      const auto nearest = tree.closest_point_and_primitive(p);
+      const auto nearest = nearest_point.tree().closest_point_and_primitive(p);
       c.distance = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)));
-      if(c.distance > far_from_surface() * spacing[vit->vertex_index()])
+      if(c.distance > far_from_surface() * nearest_point.spacing(vit->vertex_index()))
         continue;
       // barycentric weights of the nearest point, over the corners with values
       Surface_vertex corner[3];
@@ -434,7 +490,7 @@ private:
       double weight[3], total = 0;
       for(int j = 0; j < 3; ++j)
       {
-        weight[j] = std::isfinite(k1(corner[j]))
+        weight[j] = estimate(corner[j]).defined()
           ? std::sqrt(CGAL::to_double(CGAL::squared_area(nearest.first, get(working, corner[(j + 1) % 3]),
                                                          get(working, corner[(j + 2) % 3]))))
           : 0.;
@@ -442,10 +498,10 @@ private:
       }
       if(!(total > 0))  // a degenerate facet: its corners with values, alike
         for(int j = 0; j < 3; ++j)
-          total += (weight[j] = std::isfinite(k1(corner[j])) ? 1. : 0.);
+          total += (weight[j] = estimate(corner[j]).defined() ? 1. : 0.);
       if(!(total > 0))
         continue;
-      Vector n = CGAL::NULL_VECTOR, max_d = CGAL::NULL_VECTOR;
+      internal::Vec3 n = internal::Vec3::Zero(), max_d = internal::Vec3::Zero();
       double r = 0, max_k = 0, min_k = 0;
       int reference = -1;
       for(int j = 0; j < 3; ++j)
@@ -453,20 +509,22 @@ private:
         if(!(weight[j] > 0))
           continue;
         const double w = weight[j] / total;
+        const internal::Local_curvature& corner_curvature = estimate(corner[j]).curvature;
         if(reference < 0)
           reference = j;
-        n = n + w * normal[corner[j]];
+        n += w * corner_curvature.normal;
         // a principal direction is a line: align signs before averaging
-        max_d = max_d + (d1(corner[j]) * d1(corner[reference]) < 0 ? -w : w) * d1(corner[j]);
-        r += w * used_radius[corner[j]];
-        max_k += w * k1(corner[j]);
-        min_k += w * get(principal, corner[j]).min_curvature;
+        const internal::Vec3& reference_d1 = estimate(corner[reference]).curvature.d1;
+        max_d += (corner_curvature.d1.dot(reference_d1) < 0 ? -w : w) * corner_curvature.d1;
+        r += w * estimate(corner[j]).radius;
+        max_k += w * corner_curvature.k1;
+        min_k += w * corner_curvature.k2;
       }
-      n = n / std::sqrt(CGAL::to_double(n.squared_length()));
-      max_d = max_d - (max_d * n) * n;
-      max_d = max_d / std::sqrt(CGAL::to_double(max_d.squared_length()));
+      n.normalize();
+      max_d = (max_d - max_d.dot(n) * n).normalized();
       const double distance = c.distance;
-      c = record(NEAREST_SURFACE_POINT, distance, r, n, max_k, min_k, max_d, CGAL::cross_product(n, max_d));
+      c = record(NEAREST_SURFACE_POINT, distance, r, to_vector(n), max_k, min_k, to_vector(max_d),
+                 to_vector(n.cross(max_d)));
     }
     return by_vertex;
   }

@@ -169,88 +169,120 @@ struct Quadric_fit_error
   double per_noise = 0;           // standard error of H per unit of noise: mean_curvature / noise
 };
 
-// Least-squares fit of the height function
+// A neighbour of the vertex as the quadric fit sees it: its coordinates
+// (x, y, z) in the vertex's tangent frame divided by a length L, and its
+// squared distance to the vertex in model units. The products of its row
+// (x^2, x y, y^2, x, y, 1) are computed once, whatever the number of fits
+// (one per radius) it takes part in.
+struct Quadric_terms
+{
+  double row_products[21];  // the lower triangle of row row^T, column by column
+  double height_row[6];     // z row
+  double height2;           // z^2
+  double squared_distance;
+
+  Quadric_terms(double x, double y, double z, double squared_distance_) : squared_distance(squared_distance_)
+  {
+    const double row[6] = {x * x, x * y, y * y, x, y, 1};
+    int k = 0;
+    for(int j = 0; j < 6; ++j)
+      for(int i = j; i < 6; ++i)
+        row_products[k++] = row[i] * row[j];
+    for(int i = 0; i < 6; ++i)
+      height_row[i] = z * row[i];
+    height2 = z * z;
+  }
+};
+
+// Weighted least-squares fit of the height function
 //   z = A x^2 + B x y + C y^2 + D x + E y + F
-// to the vertex (at the origin) and its neighbors, in the frame of the normal
-// n. The linear terms absorb the normal's error and the constant term the
-// vertex's own displacement (noise); the curvature is that of the graph at
-// the origin. Curvature is positive where the surface bends away from n.
+// to the vertex (at the origin) and the neighbours `terms[0, count)`, in the
+// frame `f` of the vertex normal. The linear terms absorb the normal's
+// error and the constant term the vertex's own displacement (noise); the
+// curvature is that of the graph at the origin, positive where the surface
+// bends away from the normal. A neighbour at distance d has the weight
+// (1 - d^2 / (1.5 fade)^2)^4, which fades to 0 at 1.5 times `fade` (the
+// neighbourhood's radius); the terms are in coordinates divided by
+// `length`, and the fit runs in coordinates divided by `fade`, which
+// condition it whatever the size of the neighbourhood.
 // When `error` is given, it receives the uncertainty of the mean curvature
 // A + C for heights with independent noise of one standard deviation
 // (weighted least squares: the sandwich variance, and the residual variance
 // over the effective degrees of freedom; infinite with none left): what the
-// automatic neighborhood weighs against the bias of larger neighborhoods.
-inline bool quadric_fit(const Vec3& n, const std::vector<Neighbor>& nbrs, Local_curvature& out,
-                        Quadric_fit_error* error = nullptr)
+// automatic neighbourhood weighs against the bias of larger neighbourhoods.
+// False with fewer than 5 neighbours or a singular system.
+inline bool quadric_fit(const Tangent_frame& f, const Quadric_terms* terms, std::size_t count, double fade,
+                        double length, Local_curvature& out, Quadric_fit_error* error = nullptr)
 {
-  if(nbrs.size() < 5)
+  if(count < 5 || !(fade > 0))
     return false;
-  const Tangent_frame f = frame_from_normal(n);
-  double h = 0, reach = 0;
-  for(const Neighbor& q : nbrs)
+  // the normal equations X' W X, X' W z, z' W z (and X' W^2 X for the error),
+  // packed as Quadric_terms::row_products; the vertex's own row is (0,...,0,1)
+  // with height 0 and weight 1
+  double m[21] = {0}, m2[21] = {0}, b[6] = {0};
+  double zz = 0, weights = 1;
+  const double fade2 = 2.25 * fade * fade;
+  for(std::size_t t = 0; t < count; ++t)
   {
-    h += q.offset.norm();
-    reach = (std::max)(reach, q.offset.norm());
+    const Quadric_terms& q = terms[t];
+    const double u = 1 - q.squared_distance / fade2;
+    const double w = u > 0 ? u * u * u * u : 0.;
+    for(int k = 0; k < 21; ++k)
+      m[k] += w * q.row_products[k];
+    for(int k = 0; k < 6; ++k)
+      b[k] += w * q.height_row[k];
+    zz += w * q.height2;
+    if(error != nullptr)
+    {
+      const double w2 = w * w;
+      for(int k = 0; k < 21; ++k)
+        m2[k] += w2 * q.row_products[k];
+      weights += w;
+    }
   }
-  h /= double(nbrs.size());
-  if(!(h > 0))
-    return false;
-  reach /= h;
+  m[20] += 1;
+  m2[20] += 1;
 
-  // weighted least squares by its normal equations, in fixed-size storage:
-  // the vertex itself (x = y = 0, z = 0) and each neighbor give a row
+  // from coordinates divided by `length` to coordinates divided by `fade`:
+  // the row scales by s = length / fade (quadratic terms by s^2), the height by s
   typedef Eigen::Matrix<double, 6, 1> Vector6;
   typedef Eigen::Matrix<double, 6, 6> Matrix6;
-  Matrix6 normal_matrix = Matrix6::Zero();
-  Vector6 rhs = Vector6::Zero();
-  normal_matrix(5, 5) = 1;
-  for(const Neighbor& q : nbrs)
+  const double s = length / fade;
+  const double scale[6] = {s * s, s * s, s * s, s, s, 1};
+  Matrix6 normal_matrix, squared_weights;
+  Vector6 rhs;
+  int k = 0;
+  for(int j = 0; j < 6; ++j)
   {
-    const Vec3 o = q.offset / h;  // unit-free coordinates condition the fit
-    const double x = o.dot(f.e1), y = o.dot(f.e2);
-    const double t = o.squaredNorm() / (2.25 * reach * reach);
-    const double w = (1 - t) * (1 - t);  // fades to 0 at 1.5 times the ring's reach
-    Vector6 row;
-    row << x * x, x * y, y * y, x, y, 1;
-    normal_matrix.noalias() += (w * w) * row * row.transpose();
-    rhs.noalias() += (w * w * o.dot(f.n)) * row;
+    rhs(j) = s * scale[j] * b[j];
+    for(int i = j; i < 6; ++i, ++k)
+    {
+      normal_matrix(i, j) = normal_matrix(j, i) = scale[i] * scale[j] * m[k];
+      squared_weights(i, j) = squared_weights(j, i) = scale[i] * scale[j] * m2[k];
+    }
   }
   const Eigen::LDLT<Matrix6> ldlt(normal_matrix);
   const auto pivots = ldlt.vectorD();
   if(ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
     return false;
   const Vector6 coef = ldlt.solve(rhs);
-  const double A = coef(0) / h, B = coef(1) / h, C = coef(2) / h, D = coef(3), E = coef(4);
+  const double A = coef(0) / fade, B = coef(1) / fade, C = coef(2) / fade, D = coef(3), E = coef(4);
   if(error != nullptr)
   {
     // rows weighted by W: E[sum W r^2] = s^2 (sum W - tr(M^-1 M2)) and
-    // var(m' coef) = s^2 m' M^-1 M2 M^-1 m, M = X' W X, M2 = X' W^2 X
-    double residuals = coef(5) * coef(5), weights = 1;  // the vertex's own row
-    Matrix6 squared_weights = Matrix6::Zero();
-    squared_weights(5, 5) = 1;
-    for(const Neighbor& q : nbrs)
-    {
-      const Vec3 o = q.offset / h;
-      const double x = o.dot(f.e1), y = o.dot(f.e2);
-      const double t = o.squaredNorm() / (2.25 * reach * reach);
-      const double w2 = (1 - t) * (1 - t) * (1 - t) * (1 - t);
-      Vector6 row;
-      row << x * x, x * y, y * y, x, y, 1;
-      const double r = o.dot(f.n) - row.dot(coef);
-      residuals += w2 * r * r;
-      weights += w2;
-      squared_weights.noalias() += (w2 * w2) * row * row.transpose();
-    }
+    // var(m' coef) = s^2 m' M^-1 M2 M^-1 m, M = X' W X, M2 = X' W^2 X;
+    // sum W r^2 = z' W z - 2 coef' X' W z + coef' M coef
+    const double residuals = (std::max)(0., s * s * zz - 2 * coef.dot(rhs) + coef.dot(normal_matrix * coef));
     Vector6 mean_row = Vector6::Zero();
     mean_row(0) = mean_row(2) = 1;
-    const Vector6 m = ldlt.solve(mean_row);
-    const double spread = m.dot(squared_weights * m);
+    const Vector6 mean_solution = ldlt.solve(mean_row);
+    const double spread = mean_solution.dot(squared_weights * mean_solution);
     const double dof = weights - ldlt.solve(squared_weights).trace();
     const double variance = dof > 0.5 ? residuals / dof : std::numeric_limits<double>::infinity();
-    error->noise = std::sqrt(variance) * h;
+    error->noise = std::sqrt(variance) * fade;
     error->degrees_of_freedom = dof;
-    error->per_noise = std::sqrt(spread) / (h * h);
-    error->mean_curvature = std::sqrt(variance * spread) / h;
+    error->per_noise = std::sqrt(spread) / (fade * fade);
+    error->mean_curvature = std::sqrt(variance * spread) / fade;
   }
 
   // first and second fundamental forms of (x, y, z(x, y)) at the origin,

@@ -37,6 +37,8 @@
 // curvature may fall out of double's range: 1e300 gives K about 1e-600,
 // which rounds to 0.)
 
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -214,8 +216,8 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
       Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(point_map));
       tree.build();
       const Distance distance(point_map);
-      for(std::size_t i = 0; i < q.size(); ++i)
-      {
+      // the searches only read the tree: one per point, on any thread
+      for_each_index<CGAL::Parallel_if_available_tag>(q.size(), []() { return 0; }, [&](std::size_t i, int) {
         Search search(tree, q[i], k + 1, 0, true, distance);
         std::size_t found = 0;
         bool self_skipped = false;
@@ -234,7 +236,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
         }
         for(; found < k; ++found)  // fewer than k others
           neighbours[i * k + found] = i;
-      }
+      });
       std::vector<double> positive;
       for(double d : dk)
         if(d > 0)

@@ -1,0 +1,226 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SURFACE_NEIGHBORHOODS_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SURFACE_NEIGHBORHOODS_H
+
+// The neighbourhoods of the curvature fits, searched on a flat copy of the
+// mesh's vertex graph: positions and adjacency in arrays indexed by vertex
+// index, so that the searches, run once per vertex and possibly on several
+// threads, touch contiguous memory and nothing of the mesh.
+
+#include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+// The vertex graph of a mesh: for vertex index v, its position and its
+// neighbours' indices adjacent[first[v], first[v + 1]).
+struct Vertex_graph
+{
+  std::vector<Vec3> points;
+  std::vector<std::size_t> first;
+  std::vector<std::size_t> adjacent;
+
+  std::size_t size() const { return points.size(); }
+};
+
+template <typename Point>
+Vec3 to_vec3(const Point& p)
+{
+  return Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+template <typename PolygonMesh, typename VPM, typename VertexIndexMap>
+Vertex_graph vertex_graph(const PolygonMesh& pmesh, const VPM& vpm, const VertexIndexMap& vertex_index)
+{
+  Vertex_graph g;
+  const std::size_t n = num_vertices(pmesh);
+  g.points.resize(n);
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> by_index(n);
+  for(auto v : vertices(pmesh))
+  {
+    by_index[get(vertex_index, v)] = v;
+    g.points[get(vertex_index, v)] = to_vec3(get(vpm, v));
+  }
+  g.first.reserve(n + 1);
+  g.first.push_back(0);
+  for(auto v : by_index)
+  {
+    if(halfedge(v, pmesh) != boost::graph_traits<PolygonMesh>::null_halfedge())
+      for(auto u : CGAL::vertices_around_target(v, pmesh))
+        g.adjacent.push_back(get(vertex_index, u));
+    g.first.push_back(g.adjacent.size());
+  }
+  return g;
+}
+
+// The part of the vertex graph that the searches around v can reach: the
+// vertices fewer than `rings` edges away and those within distance
+// `radius` of v that the others lead to, with their adjacency, and their other
+// neighbours without. v has index 0; `by_index` receives the vertices.
+template <typename PolygonMesh, typename VPM>
+Vertex_graph local_vertex_graph(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                const PolygonMesh& pmesh, const VPM& vpm, std::size_t rings, double radius,
+                                std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& by_index)
+{
+  Vertex_graph g;
+  std::unordered_map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, std::size_t> index;
+  std::vector<std::size_t> hops(1, 0);
+  by_index.assign(1, v);
+  index[v] = 0;
+  g.points.push_back(to_vec3(get(vpm, v)));
+  g.first.push_back(0);
+  for(std::size_t k = 0; k < by_index.size(); ++k)
+  {
+    const auto u = by_index[k];
+    const bool expanded = hops[k] < rings || (g.points[k] - g.points[0]).norm() <= radius;
+    if(expanded && halfedge(u, pmesh) != boost::graph_traits<PolygonMesh>::null_halfedge())
+      for(auto w : CGAL::vertices_around_target(u, pmesh))
+      {
+        auto inserted = index.emplace(w, by_index.size());
+        if(inserted.second)
+        {
+          by_index.push_back(w);
+          hops.push_back(hops[k] + 1);
+          g.points.push_back(to_vec3(get(vpm, w)));
+        }
+        g.adjacent.push_back(inserted.first->second);
+      }
+    g.first.push_back(g.adjacent.size());
+  }
+  return g;
+}
+
+// The vertices around a vertex v, each with a level: the smallest index j
+// such that it is connected to v by surface edges inside the j-th of
+// nested neighbourhoods (balls of increasing radii, or rings of increasing
+// size), so that the j-th neighbourhood is every vertex of level <= j.
+// A search reuses its buffers from vertex to vertex; one per thread.
+class Nested_neighborhood_search
+{
+public:
+  explicit Nested_neighborhood_search(std::size_t number_of_vertices) : m_stamp(number_of_vertices, 0) {}
+
+  // The vertices found (v excluded), by increasing level, and where each
+  // level's neighbourhood ends: vertices()[0, end(j)) is the j-th.
+  const std::vector<std::size_t>& vertices() const { return m_found; }
+  const std::vector<double>& distances() const { return m_distance; }
+  std::size_t end(std::size_t level) const { return m_end[level]; }
+
+  // Balls of the given increasing radii around v, cut to what is connected
+  // to v inside each: a vertex's level is the smallest radius at which a
+  // path of edges joins it to v without leaving the ball (a thin part or a
+  // nearby sheet across the ball does not leak in). Levels are visited in
+  // increasing order, so a vertex is first reached from the lowest level
+  // that reaches it, which is its level.
+  void balls(const Vertex_graph& g, std::size_t v, const std::vector<double>& radii)
+  {
+    start(v, radii.size());
+    const Vec3& p = g.points[v];
+    m_pending[0].push_back(v);
+    m_pending_distance[0].push_back(0);
+    for(std::size_t level = 0; level < radii.size(); ++level)
+    {
+      // the pending list of this level grows while it is walked
+      for(std::size_t k = 0; k < m_pending[level].size(); ++k)
+      {
+        const std::size_t u = m_pending[level][k];
+        if(u != v)
+        {
+          m_found.push_back(u);
+          m_distance.push_back(m_pending_distance[level][k]);
+        }
+        for(std::size_t e = g.first[u]; e < g.first[u + 1]; ++e)
+        {
+          const std::size_t w = g.adjacent[e];
+          if(!mark(w))
+            continue;
+          const double d = (g.points[w] - p).norm();
+          std::size_t at = level;
+          while(at < radii.size() && d > radii[at])
+            ++at;
+          if(at == radii.size())
+            continue;  // outside every ball
+          m_pending[at].push_back(w);
+          m_pending_distance[at].push_back(d);
+        }
+      }
+      m_end[level] = m_found.size();
+    }
+  }
+
+  // The rings 1, ..., rings around v: a vertex's level is its edge
+  // distance to v less one.
+  void rings(const Vertex_graph& g, std::size_t v, std::size_t rings)
+  {
+    start(v, rings);
+    std::size_t begin = 0;
+    m_found.push_back(v);  // the first frontier; removed below
+    m_distance.push_back(0);
+    for(std::size_t ring = 0; ring < rings; ++ring)
+    {
+      const std::size_t end = m_found.size();
+      for(std::size_t k = begin; k < end; ++k)
+        for(std::size_t e = g.first[m_found[k]]; e < g.first[m_found[k] + 1]; ++e)
+          if(mark(g.adjacent[e]))
+          {
+            m_found.push_back(g.adjacent[e]);
+            m_distance.push_back((g.points[g.adjacent[e]] - g.points[v]).norm());
+          }
+      begin = end;
+      m_end[ring] = m_found.size() - 1;
+    }
+    m_found.erase(m_found.begin());
+    m_distance.erase(m_distance.begin());
+  }
+
+private:
+  void start(std::size_t v, std::size_t levels)
+  {
+    ++m_current;
+    m_found.clear();
+    m_distance.clear();
+    m_end.assign(levels, 0);
+    m_pending.resize((std::max)(levels, m_pending.size()));
+    m_pending_distance.resize(m_pending.size());
+    for(std::size_t j = 0; j < m_pending.size(); ++j)
+    {
+      m_pending[j].clear();
+      m_pending_distance[j].clear();
+    }
+    m_stamp[v] = m_current;
+  }
+
+  // true the first time it is called for w in the current search
+  bool mark(std::size_t w)
+  {
+    if(m_stamp[w] == m_current)
+      return false;
+    m_stamp[w] = m_current;
+    return true;
+  }
+
+  std::vector<std::size_t> m_stamp;
+  std::size_t m_current = 0;
+  std::vector<std::size_t> m_found;
+  std::vector<double> m_distance;
+  std::vector<std::size_t> m_end;
+  std::vector<std::vector<std::size_t> > m_pending;
+  std::vector<std::vector<double> > m_pending_distance;
+};
+
+} // namespace internal
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SURFACE_NEIGHBORHOODS_H
