@@ -222,7 +222,7 @@ public:
   {
     explicit Workspace(std::size_t number_of_vertices) : search(number_of_vertices) {}
     Nested_neighborhood_search search;
-    std::vector<Quadric_terms> terms;
+    std::vector<Quadric_point> points;
     std::vector<Neighbor> neighbors;
     std::vector<Local_curvature> fits;
     std::vector<char> fitted;
@@ -276,7 +276,7 @@ private:
     return std::size_t(std::lower_bound(m_radii.begin(), m_radii.end(), r) - m_radii.begin());
   }
 
-  // The terms of the fit for each vertex the search found, in coordinates
+  // What the fit needs of each vertex the search found, in coordinates
   // divided by `length`; coincident vertices carry no direction and are
   // left out (`kept` counts, per level, those of that level and below).
   void prepare(std::size_t v, const Tangent_frame& f, double length, std::size_t levels, Workspace& ws,
@@ -285,7 +285,7 @@ private:
     const Vec3& p = m_graph.points[v];
     const std::vector<std::size_t>& found = ws.search.vertices();
     const std::vector<double>& distance = ws.search.distances();
-    ws.terms.clear();
+    ws.points.clear();
     ws.neighbors.clear();
     kept.assign(levels, 0);
     std::size_t level = 0;
@@ -299,7 +299,7 @@ private:
       if(m_estimator == QUADRIC_FIT)
       {
         const Vec3 o = offset / length;
-        ws.terms.emplace_back(o.dot(f.e1), o.dot(f.e2), o.dot(f.n), distance[k] * distance[k]);
+        ws.points.push_back(Quadric_point{o.dot(f.e1), o.dot(f.e2), o.dot(f.n), distance[k] * distance[k]});
         continue;
       }
       const Vec3& n_u = m_normals[found[k]];
@@ -312,7 +312,7 @@ private:
 
   std::size_t count(const Workspace& ws) const
   {
-    return m_estimator == QUADRIC_FIT ? ws.terms.size() : ws.neighbors.size();
+    return m_estimator == QUADRIC_FIT ? ws.points.size() : ws.neighbors.size();
   }
 
   // The fit over the first `count` prepared neighbours, fading at `fade`.
@@ -321,7 +321,7 @@ private:
   {
     bool ok = false;
     if(m_estimator == QUADRIC_FIT)
-      ok = quadric_fit(f, ws.terms.data(), count, fade, length, out, error);
+      ok = quadric_fit(f, ws.points.data(), count, fade, length, out, error);
     else
     {
       const std::vector<Neighbor> prefix(ws.neighbors.begin(), ws.neighbors.begin() + std::ptrdiff_t(count));

@@ -171,38 +171,21 @@ struct Quadric_fit_error
 
 // A neighbour of the vertex as the quadric fit sees it: its coordinates
 // (x, y, z) in the vertex's tangent frame divided by a length L, and its
-// squared distance to the vertex in model units. The products of its row
-// (x^2, x y, y^2, x, y, 1) are computed once, whatever the number of fits
-// (one per radius) it takes part in.
-struct Quadric_terms
+// squared distance to the vertex in model units.
+struct Quadric_point
 {
-  double row_products[21];  // the lower triangle of row row^T, column by column
-  double height_row[6];     // z row
-  double height2;           // z^2
-  double squared_distance;
-
-  Quadric_terms(double x, double y, double z, double squared_distance_) : squared_distance(squared_distance_)
-  {
-    const double row[6] = {x * x, x * y, y * y, x, y, 1};
-    int k = 0;
-    for(int j = 0; j < 6; ++j)
-      for(int i = j; i < 6; ++i)
-        row_products[k++] = row[i] * row[j];
-    for(int i = 0; i < 6; ++i)
-      height_row[i] = z * row[i];
-    height2 = z * z;
-  }
+  double x, y, z, squared_distance;
 };
 
 // Weighted least-squares fit of the height function
 //   z = A x^2 + B x y + C y^2 + D x + E y + F
-// to the vertex (at the origin) and the neighbours `terms[0, count)`, in the
+// to the vertex (at the origin) and the neighbours `points[0, count)`, in the
 // frame `f` of the vertex normal. The linear terms absorb the normal's
 // error and the constant term the vertex's own displacement (noise); the
 // curvature is that of the graph at the origin, positive where the surface
 // bends away from the normal. A neighbour at distance d has the weight
 // (1 - d^2 / (1.5 fade)^2)^4, which fades to 0 at 1.5 times `fade` (the
-// neighbourhood's radius); the terms are in coordinates divided by
+// neighbourhood's radius); the points are in coordinates divided by
 // `length`, and the fit runs in coordinates divided by `fade`, which
 // condition it whatever the size of the neighbourhood.
 // When `error` is given, it receives the uncertainty of the mean curvature
@@ -211,32 +194,41 @@ struct Quadric_terms
 // over the effective degrees of freedom; infinite with none left): what the
 // automatic neighbourhood weighs against the bias of larger neighbourhoods.
 // False with fewer than 5 neighbours or a singular system.
-inline bool quadric_fit(const Tangent_frame& f, const Quadric_terms* terms, std::size_t count, double fade,
+inline bool quadric_fit(const Tangent_frame& f, const Quadric_point* points, std::size_t count, double fade,
                         double length, Local_curvature& out, Quadric_fit_error* error = nullptr)
 {
   if(count < 5 || !(fade > 0))
     return false;
-  // the normal equations X' W X, X' W z, z' W z (and X' W^2 X for the error),
-  // packed as Quadric_terms::row_products; the vertex's own row is (0,...,0,1)
-  // with height 0 and weight 1
+  // the normal equations X' W X, X' W z, z' W z (and X' W^2 X for the
+  // error), X's rows (x^2, x y, y^2, x, y, 1), the symmetric matrices packed
+  // column by column; the vertex's own row is (0, ..., 0, 1) with height 0
+  // and weight 1
   double m[21] = {0}, m2[21] = {0}, b[6] = {0};
   double zz = 0, weights = 1;
   const double fade2 = 2.25 * fade * fade;
   for(std::size_t t = 0; t < count; ++t)
   {
-    const Quadric_terms& q = terms[t];
+    const Quadric_point& q = points[t];
     const double u = 1 - q.squared_distance / fade2;
     const double w = u > 0 ? u * u * u * u : 0.;
-    for(int k = 0; k < 21; ++k)
-      m[k] += w * q.row_products[k];
-    for(int k = 0; k < 6; ++k)
-      b[k] += w * q.height_row[k];
-    zz += w * q.height2;
+    const double row[6] = {q.x * q.x, q.x * q.y, q.y * q.y, q.x, q.y, 1};
+    double weighted[6];
+    for(int i = 0; i < 6; ++i)
+    {
+      weighted[i] = w * row[i];
+      b[i] += q.z * weighted[i];
+    }
+    zz += w * q.z * q.z;
+    int k = 0;
+    for(int j = 0; j < 6; ++j)
+      for(int i = j; i < 6; ++i)
+        m[k++] += weighted[i] * row[j];
     if(error != nullptr)
     {
-      const double w2 = w * w;
-      for(int k = 0; k < 21; ++k)
-        m2[k] += w2 * q.row_products[k];
+      k = 0;
+      for(int j = 0; j < 6; ++j)
+        for(int i = j; i < 6; ++i)
+          m2[k++] += w * weighted[i] * row[j];
       weights += w;
     }
   }

@@ -127,20 +127,19 @@ public:
   {
     start(v, radii.size());
     const Vec3& p = g.points[v];
-    m_pending[0].push_back(v);
-    m_pending_distance[0].push_back(0);
+    m_pending[0].push_back(Entry{v, 0});
     for(std::size_t level = 0; level < radii.size(); ++level)
     {
       // the pending list of this level grows while it is walked
       for(std::size_t k = 0; k < m_pending[level].size(); ++k)
       {
-        const std::size_t u = m_pending[level][k];
-        if(u != v)
+        const Entry entry = m_pending[level][k];
+        if(entry.vertex != v)
         {
-          m_found.push_back(u);
-          m_distance.push_back(m_pending_distance[level][k]);
+          m_found.push_back(entry.vertex);
+          m_distance.push_back(entry.distance);
         }
-        for(std::size_t e = g.first[u]; e < g.first[u + 1]; ++e)
+        for(std::size_t e = g.first[entry.vertex]; e < g.first[entry.vertex + 1]; ++e)
         {
           const std::size_t w = g.adjacent[e];
           if(!mark(w))
@@ -149,10 +148,8 @@ public:
           std::size_t at = level;
           while(at < radii.size() && d > radii[at])
             ++at;
-          if(at == radii.size())
-            continue;  // outside every ball
-          m_pending[at].push_back(w);
-          m_pending_distance[at].push_back(d);
+          if(at < radii.size())  // else outside every ball
+            m_pending[at].push_back(Entry{w, d});
         }
       }
       m_end[level] = m_found.size();
@@ -192,12 +189,8 @@ private:
     m_distance.clear();
     m_end.assign(levels, 0);
     m_pending.resize((std::max)(levels, m_pending.size()));
-    m_pending_distance.resize(m_pending.size());
-    for(std::size_t j = 0; j < m_pending.size(); ++j)
-    {
-      m_pending[j].clear();
-      m_pending_distance[j].clear();
-    }
+    for(std::vector<Entry>& pending : m_pending)
+      pending.clear();
     m_stamp[v] = m_current;
   }
 
@@ -210,13 +203,17 @@ private:
     return true;
   }
 
-  std::vector<std::size_t> m_stamp;
+  std::vector<std::size_t> m_stamp;  // the search that last marked each vertex
   std::size_t m_current = 0;
   std::vector<std::size_t> m_found;
   std::vector<double> m_distance;
   std::vector<std::size_t> m_end;
-  std::vector<std::vector<std::size_t> > m_pending;
-  std::vector<std::vector<double> > m_pending_distance;
+  struct Entry
+  {
+    std::size_t vertex;
+    double distance;
+  };
+  std::vector<std::vector<Entry> > m_pending;  // by level: reached, not yet walked
 };
 
 } // namespace internal
