@@ -1,0 +1,370 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_ESTIMATION_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_ESTIMATION_H
+
+// The curvature at every vertex of a mesh for one or several neighbourhood
+// rules (the manual, "Curvature on a Triangle Mesh" and "Neighbourhoods"):
+// the vertex normals, the searches (internal/surface_neighborhoods.h), the
+// fits on them (internal/curvature_fits.h) and the automatic choice among
+// candidate radii. `estimate_vertex_curvatures()` runs one rule;
+// `Multiscale_curvatures` runs all the layers of a surface at once.
+
+#include <CGAL/Conformal_alpha_shapes_3/curvature_estimator.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/automatic_radius.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/surface_neighborhoods.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+inline Vec3 nan_vector()
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return Vec3(nan, nan, nan);
+}
+
+// Chen-Wu vertex normal (the manual, section "Curvature"): unit face normals weighted by the inverse
+// distance from the vertex to the face centroid. Faces of zero area are
+// skipped; NaN when no face is left.
+template <typename PolygonMesh, typename VPM>
+Vec3 chen_wu_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                    const PolygonMesh& pmesh, const VPM& vpm)
+{
+  if(halfedge(v, pmesh) == boost::graph_traits<PolygonMesh>::null_halfedge())
+    return nan_vector();
+  Vec3 sum = Vec3::Zero();
+  const Vec3 p = to_vec3(get(vpm, v));
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, pmesh), pmesh))
+  {
+    if(is_border(h, pmesh))
+      continue;
+    const Vec3 a = to_vec3(get(vpm, source(h, pmesh)));
+    const Vec3 b = to_vec3(get(vpm, target(h, pmesh)));
+    const Vec3 c = to_vec3(get(vpm, target(next(h, pmesh), pmesh)));
+    const Vec3 cross = (b - a).cross(c - a);
+    const double twice_area = cross.norm();
+    const double to_centroid = ((a + b + c) / 3 - p).norm();
+    if(!(twice_area > 0) || !(to_centroid > 0))
+      continue;
+    sum += cross / (twice_area * to_centroid);
+  }
+  const double len = sum.norm();
+  return len > 0 ? Vec3(sum / len) : nan_vector();
+}
+
+// Which neighbours a fit uses (see `estimate_vertex_curvatures()`): a ring
+// size, a radius, or candidate radii to choose from per vertex.
+struct Neighborhood_rule
+{
+  int rings = 1;
+  double radius = 0;               // used when > 0
+  std::vector<double> candidates;  // increasing; used when not empty
+};
+
+// What one rule gives at one vertex: the curvature and the radius of the
+// neighbourhood used, NaN where undefined.
+struct Vertex_estimate
+{
+  Local_curvature curvature{nan_vector(), std::numeric_limits<double>::quiet_NaN(),
+                            std::numeric_limits<double>::quiet_NaN(), nan_vector(), nan_vector()};
+  double radius = std::numeric_limits<double>::quiet_NaN();
+
+  bool defined() const { return std::isfinite(curvature.k1) && std::isfinite(curvature.k2); }
+};
+
+// The estimates of several neighbourhood rules at every vertex, sharing
+// one search per vertex: the radii of all rules (fixed ones and
+// candidates) are nested balls found by one search, the ring sizes nested
+// rings found by another, and each fit runs on a prefix of what the search
+// found. A neighbourhood too small or too degenerate for the fit is widened
+// (two more rings, or the radius by 1.5 twice) before the vertex is given
+// up (NaN).
+class Curvature_estimation
+{
+public:
+  // Per thread: the searches and the fit's buffers.
+  struct Workspace
+  {
+    explicit Workspace(std::size_t number_of_vertices) : search(number_of_vertices) {}
+    Nested_neighborhood_search search;
+    std::vector<Quadric_point> points;
+    std::vector<Neighbor> neighbors;
+    std::vector<Local_curvature> fits;
+    std::vector<char> fitted;
+    std::vector<Quadric_fit_error> errors;
+    std::vector<Candidate_fit> candidates;
+  };
+
+  // `normals`: the Chen-Wu normal of each vertex of `graph`.
+  Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
+                       const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator)
+    : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator)
+  {
+    for(const Neighborhood_rule& rule : rules)
+    {
+      if(!rule.candidates.empty())
+        m_radii.insert(m_radii.end(), rule.candidates.begin(), rule.candidates.end());
+      else if(rule.radius > 0)
+        m_radii.push_back(rule.radius);
+      else
+        m_rings = (std::max)(m_rings, std::size_t(rule.rings) + 2);
+    }
+    std::sort(m_radii.begin(), m_radii.end());
+    m_radii.erase(std::unique(m_radii.begin(), m_radii.end()), m_radii.end());
+    m_with_error.assign(m_radii.size(), 0);
+    for(const Neighborhood_rule& rule : rules)
+      for(double r : rule.candidates)
+        m_with_error[radius_level(r)] = 1;
+  }
+
+  Workspace make_workspace() const { return Workspace(m_graph.size()); }
+
+  // The estimates at vertex v, one per rule, into out[0, rules.size()).
+  void estimate(std::size_t v, Workspace& ws, Vertex_estimate* out) const
+  {
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
+      out[r] = Vertex_estimate();
+    const Vec3& n = m_normals[v];
+    if(!std::isfinite(n.x()))
+      return;
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
+      out[r].curvature.normal = n;
+    if(!m_radii.empty())
+      estimate_in_balls(v, ws, out);
+    if(m_rings > 0)
+      estimate_in_rings(v, ws, out);
+  }
+
+private:
+  std::size_t radius_level(double r) const
+  {
+    return std::size_t(std::lower_bound(m_radii.begin(), m_radii.end(), r) - m_radii.begin());
+  }
+
+  // What the fit needs of each vertex the search found, in coordinates
+  // divided by `length`; coincident vertices carry no direction and are
+  // left out (`kept` counts, per level, those of that level and below).
+  void prepare(std::size_t v, const Tangent_frame& f, double length, std::size_t levels, Workspace& ws,
+               std::vector<std::size_t>& kept) const
+  {
+    const Vec3& p = m_graph.points[v];
+    const std::vector<std::size_t>& found = ws.search.vertices();
+    const std::vector<double>& distance = ws.search.distances();
+    ws.points.clear();
+    ws.neighbors.clear();
+    kept.assign(levels, 0);
+    std::size_t level = 0;
+    for(std::size_t k = 0; k < found.size(); ++k)
+    {
+      while(ws.search.end(level) <= k)
+        kept[level++] = count(ws);
+      if(!(distance[k] > 0))
+        continue;
+      const Vec3 offset = m_graph.points[found[k]] - p;
+      if(m_estimator == QUADRIC_FIT)
+      {
+        const Vec3 o = offset / length;
+        ws.points.push_back(Quadric_point{o.dot(f.e1), o.dot(f.e2), o.dot(f.n), distance[k] * distance[k]});
+        continue;
+      }
+      const Vec3& n_u = m_normals[found[k]];
+      if(std::isfinite(n_u.x()))
+        ws.neighbors.push_back(Neighbor{offset, normal_curvature(offset, f.n, n_u)});
+    }
+    for(; level < levels; ++level)
+      kept[level] = count(ws);
+  }
+
+  std::size_t count(const Workspace& ws) const
+  {
+    return m_estimator == QUADRIC_FIT ? ws.points.size() : ws.neighbors.size();
+  }
+
+  // The fit over the first `count` prepared neighbours, fading at `fade`.
+  bool fit(const Tangent_frame& f, std::size_t count, double fade, double length, Workspace& ws,
+           Local_curvature& out, Quadric_fit_error* error) const
+  {
+    bool ok = false;
+    if(m_estimator == QUADRIC_FIT)
+      ok = quadric_fit(f, ws.points.data(), count, fade, length, out, error);
+    else
+    {
+      const std::vector<Neighbor> prefix(ws.neighbors.begin(), ws.neighbors.begin() + std::ptrdiff_t(count));
+      ok = m_estimator == PAPER_EULER_FIT ? paper_euler_fit(f.n, prefix, out)
+                                          : euler_least_squares_fit(f.n, prefix, out);
+    }
+    return ok && std::isfinite(out.k1) && std::isfinite(out.k2);
+  }
+
+  void estimate_in_balls(std::size_t v, Workspace& ws, Vertex_estimate* out) const
+  {
+    const Tangent_frame f = frame_from_normal(m_normals[v]);
+    const double length = m_radii.back();
+    std::vector<std::size_t> kept;
+    ws.search.balls(m_graph, v, m_radii);
+    prepare(v, f, length, m_radii.size(), ws, kept);
+    ws.fits.resize(m_radii.size());
+    ws.errors.resize(m_radii.size());
+    ws.fitted.assign(m_radii.size(), 0);
+    for(std::size_t j = 0; j < m_radii.size(); ++j)
+      ws.fitted[j] = fit(f, kept[j], m_radii[j], length, ws, ws.fits[j], m_with_error[j] ? &ws.errors[j] : nullptr);
+
+    std::vector<std::size_t> to_widen;
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
+    {
+      const Neighborhood_rule& rule = m_rules[r];
+      if(!rule.candidates.empty())
+      {
+        ws.candidates.clear();
+        for(double radius : rule.candidates)
+        {
+          const std::size_t j = radius_level(radius);
+          if(ws.fitted[j])
+            ws.candidates.push_back(Candidate_fit{ws.fits[j], ws.errors[j], radius});
+        }
+        if(!ws.candidates.empty())
+        {
+          const Candidate_fit& chosen = choose_by_confidence_intervals(ws.candidates);
+          out[r] = Vertex_estimate{chosen.curvature, chosen.radius};
+        }
+      }
+      else if(rule.radius > 0)
+      {
+        const std::size_t j = radius_level(rule.radius);
+        if(ws.fitted[j])
+          out[r] = Vertex_estimate{ws.fits[j], rule.radius};
+        else
+          to_widen.push_back(r);
+      }
+    }
+    // the wider balls of the few vertices that need them, last: their
+    // searches replace the shared one
+    for(std::size_t r : to_widen)
+      for(int widening = 1; widening <= 2 && !out[r].defined(); ++widening)
+      {
+        const double radius = m_rules[r].radius * std::pow(1.5, widening);
+        ws.search.balls(m_graph, v, std::vector<double>(1, radius));
+        prepare(v, f, radius, 1, ws, kept);
+        Local_curvature c;
+        if(fit(f, kept[0], radius, radius, ws, c, nullptr))
+          out[r] = Vertex_estimate{c, radius};
+      }
+  }
+
+  // Rings up to the largest ring size plus two (the widening), fitted on
+  // each prefix; a ring's fit fades at 1.5 times the distance of its
+  // farthest neighbour, which is the radius reported.
+  void estimate_in_rings(std::size_t v, Workspace& ws, Vertex_estimate* out) const
+  {
+    const Tangent_frame f = frame_from_normal(m_normals[v]);
+    ws.search.rings(m_graph, v, m_rings);
+    const std::vector<double>& distance = ws.search.distances();
+    double length = 0;
+    for(double d : distance)
+      length = (std::max)(length, d);
+    if(!(length > 0))
+      return;
+    std::vector<std::size_t> kept;
+    prepare(v, f, length, m_rings, ws, kept);
+    for(std::size_t r = 0; r < m_rules.size(); ++r)
+    {
+      const Neighborhood_rule& rule = m_rules[r];
+      if(!rule.candidates.empty() || rule.radius > 0)
+        continue;
+      for(int widening = 0; widening <= 2 && !out[r].defined(); ++widening)
+      {
+        const std::size_t ring = std::size_t(rule.rings + widening) - 1;
+        double reach = 0;
+        for(std::size_t k = 0; k < ws.search.end(ring); ++k)
+          reach = (std::max)(reach, distance[k]);
+        Local_curvature c;
+        if(fit(f, kept[ring], reach, length, ws, c, nullptr))
+          out[r] = Vertex_estimate{c, reach};
+      }
+    }
+  }
+
+  const Vertex_graph& m_graph;
+  const std::vector<Vec3>& m_normals;
+  std::vector<Neighborhood_rule> m_rules;
+  Curvature_estimator m_estimator;
+  std::vector<double> m_radii;     // every rule's radii, increasing
+  std::vector<char> m_with_error;  // by radius: a candidate of an automatic rule
+  std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
+};
+
+// Estimates of every rule at every vertex of `graph`: [rule][vertex index].
+template <typename ConcurrencyTag>
+std::vector<std::vector<Vertex_estimate> > estimate_at_every_vertex(const Vertex_graph& graph,
+                                                                   const std::vector<Vec3>& normals,
+                                                                   const std::vector<Neighborhood_rule>& rules,
+                                                                   Curvature_estimator estimator)
+{
+  const Curvature_estimation estimation(graph, normals, rules, estimator);
+  std::vector<std::vector<Vertex_estimate> > by_rule(rules.size(), std::vector<Vertex_estimate>(graph.size()));
+  typedef Curvature_estimation::Workspace Workspace;
+  struct Per_thread
+  {
+    Workspace workspace;
+    std::vector<Vertex_estimate> estimates;
+  };
+  for_each_index<ConcurrencyTag>(graph.size(),
+    [&]() { return Per_thread{estimation.make_workspace(), std::vector<Vertex_estimate>(rules.size())}; },
+    [&](std::size_t v, Per_thread& thread) {
+      estimation.estimate(v, thread.workspace, thread.estimates.data());
+      for(std::size_t r = 0; r < rules.size(); ++r)
+        by_rule[r][v] = thread.estimates[r];
+    });
+  return by_rule;
+}
+
+// The Chen-Wu normal of every vertex, by vertex index.
+template <typename ConcurrencyTag, typename PolygonMesh, typename VPM, typename VertexIndexMap>
+std::vector<Vec3> chen_wu_normals(const PolygonMesh& pmesh, const VPM& vpm, const VertexIndexMap& vertex_index)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> by_index(num_vertices(pmesh));
+  for(vertex_descriptor v : vertices(pmesh))
+    by_index[get(vertex_index, v)] = v;
+  std::vector<Vec3> normals(by_index.size());
+  for_each_index<ConcurrencyTag>(by_index.size(), []() { return 0; },
+    [&](std::size_t i, int) { normals[i] = chen_wu_normal(by_index[i], pmesh, vpm); });
+  return normals;
+}
+
+// Throws std::invalid_argument on a rule that `estimate_vertex_curvatures()` rejects.
+inline void check_neighborhood_rule(const Neighborhood_rule& rule, Curvature_estimator estimator)
+{
+  const std::string where = "estimate_vertex_curvatures: ";
+  if(rule.rings < 1)
+    throw std::invalid_argument(where + "ring size " + std::to_string(rule.rings) + " is below 1");
+  if(!(rule.radius >= 0) || !std::isfinite(rule.radius))
+    throw std::invalid_argument(where + "the neighborhood radius must be finite and positive");
+  for(std::size_t i = 0; i < rule.candidates.size(); ++i)
+    if(!(rule.candidates[i] > 0) || !std::isfinite(rule.candidates[i])
+       || (i > 0 && !(rule.candidates[i] > rule.candidates[i - 1])))
+      throw std::invalid_argument(where + "the candidate radii must be finite, positive and increasing");
+  if(!rule.candidates.empty() && estimator != QUADRIC_FIT)
+    throw std::invalid_argument(where + "choosing among candidate radii needs the QUADRIC_FIT estimator");
+}
+
+} // namespace internal
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_ESTIMATION_H
