@@ -17,6 +17,8 @@
 //               jet_smooth_point_set builds (CGAL's Neighbor_query), input order
 //   fast_seq    internal::jet_smooth_points<Sequential_tag>(points, k, passes)
 //   fast_par    the same with Parallel_tag (only when built with TBB)
+//   denoise     CAS3::denoise(points, Denoising_plan{k, passes}) as the pipeline
+//               calls it (coincident points merged first; parallel with TBB)
 //   fast_search the searches of fast_seq alone (its kd-tree, Hilbert order,
 //               unsorted hits)
 // Times: processor time (std::clock, all threads of the process) and wall
@@ -155,7 +157,7 @@ int main(int argc, char* argv[])
   double noise = 0.1;
   int passes = 1;
   bool compare = true;
-  std::vector<std::string> runs = {"delaunay", "cgal_seq", "cgal_par", "search", "fast_seq", "fast_par", "fast_search"};
+  std::vector<std::string> runs = {"delaunay", "cgal_seq", "cgal_par", "search", "fast_seq", "fast_par", "denoise", "fast_search"};
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -245,6 +247,13 @@ int main(int argc, char* argv[])
           std::printf("  fast_par %s fast_seq bit for bit\n", fast_par == fast_seq ? "equals" : "DIFFERS FROM");
       }
 #endif
+      if(wanted("denoise"))
+      {
+        std::vector<Point> points = input;
+        report(k, "denoise", measure([&] { CAS3::denoise(points, CAS3::Denoising_plan{k, passes}); }));
+        if(!fast_seq.empty())
+          std::printf("  denoise %s fast_seq bit for bit\n", points == fast_seq ? "equals" : "DIFFERS FROM");
+      }
       if(wanted("fast_search"))
         report(k, "fast_search", measure([&] { if(fast_searches(input, k) == 0) std::printf("?\n"); }));
       if(!compare)

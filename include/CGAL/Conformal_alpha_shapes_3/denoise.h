@@ -391,7 +391,7 @@ points, to the jet's point above it, from the positions of the previous
 pass: the meaning of CGAL's `jet_smooth_point_set()` with degree 2 jets and
 Monge forms (the same points to rounding, about 1e-12 spacings), computed
 by fixed-size normal equations instead of its general jet fitting, with
-unsorted kd-tree searches in Hilbert order: 7 to 9 times less processor
+unsorted kd-tree searches in Hilbert order: 8 to 10 times less processor
 time (the manual, "Noise"). With TBB (`CGAL_LINKED_WITH_TBB`) the points of
 a pass are smoothed in parallel, with the serial result bit for bit.
 Coincident points are smoothed once, as one (a jet fitted to copies of one
