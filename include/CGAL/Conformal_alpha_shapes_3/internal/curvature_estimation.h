@@ -21,6 +21,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -102,7 +103,8 @@ public:
   {
     explicit Workspace(std::size_t number_of_vertices) : search(number_of_vertices) {}
     Nested_neighborhood_search search;
-    std::vector<Quadric_point> points;
+    std::vector<Quadric_shell> shells;                    // by level, then shell
+    std::array<int, number_of_quadric_shells> shell_of;  // in the current level
     std::vector<Neighbor> neighbors;
     std::vector<Local_curvature> fits;
     std::vector<char> fitted;
@@ -156,55 +158,76 @@ private:
     return std::size_t(std::lower_bound(m_radii.begin(), m_radii.end(), r) - m_radii.begin());
   }
 
-  // What the fit needs of each vertex the search found, in coordinates
-  // divided by `length`; coincident vertices carry no direction and are
-  // left out (`kept` counts, per level, those of that level and below).
+  // Where the prepared neighbours of the levels up to one end: how many
+  // neighbours, and how many of the quadric fit's shells hold them.
+  struct Level_end
+  {
+    std::size_t neighbors = 0, shells = 0;
+  };
+
+  // What the fit needs of each vertex the search found (in coordinates
+  // divided by `length` for the quadric fit, in shells level by level);
+  // coincident vertices carry no direction and are left out. `ends[j]` is
+  // where level j ends.
   void prepare(std::size_t v, const Tangent_frame& f, double length, std::size_t levels, Workspace& ws,
-               std::vector<std::size_t>& kept) const
+               std::vector<Level_end>& ends) const
   {
     const Vec3& p = m_graph.points[v];
     const std::vector<std::size_t>& found = ws.search.vertices();
     const std::vector<double>& distance = ws.search.distances();
-    ws.points.clear();
+    const double squared_length = length * length;
+    ws.shells.clear();
     ws.neighbors.clear();
-    kept.assign(levels, 0);
+    ws.shell_of.fill(-1);
+    ends.assign(levels, Level_end());
+    Level_end end;
     std::size_t level = 0;
     for(std::size_t k = 0; k < found.size(); ++k)
     {
-      while(ws.search.end(level) <= k)
-        kept[level++] = count(ws);
+      for(; ws.search.end(level) <= k; ++level)
+      {
+        ends[level] = end;
+        ws.shell_of.fill(-1);  // a level's shells are its own
+      }
       if(!(distance[k] > 0))
         continue;
       const Vec3 offset = m_graph.points[found[k]] - p;
       if(m_estimator == QUADRIC_FIT)
       {
+        const double d2 = distance[k] * distance[k];
+        int& shell = ws.shell_of[std::size_t(quadric_shell_index(d2, squared_length))];
+        if(shell < 0)
+        {
+          shell = int(ws.shells.size());
+          ws.shells.emplace_back();
+        }
         const Vec3 o = offset / length;
-        ws.points.push_back(Quadric_point{o.dot(f.e1), o.dot(f.e2), o.dot(f.n), distance[k] * distance[k]});
+        ws.shells[std::size_t(shell)].add(o.dot(f.e1), o.dot(f.e2), o.dot(f.n), d2);
+        end.shells = ws.shells.size();
+        ++end.neighbors;
         continue;
       }
       const Vec3& n_u = m_normals[found[k]];
       if(std::isfinite(n_u.x()))
+      {
         ws.neighbors.push_back(Neighbor{offset, normal_curvature(offset, f.n, n_u)});
+        ++end.neighbors;
+      }
     }
     for(; level < levels; ++level)
-      kept[level] = count(ws);
+      ends[level] = end;
   }
 
-  std::size_t count(const Workspace& ws) const
-  {
-    return m_estimator == QUADRIC_FIT ? ws.points.size() : ws.neighbors.size();
-  }
-
-  // The fit over the first `count` prepared neighbours, fading at `fade`.
-  bool fit(const Tangent_frame& f, std::size_t count, double fade, double length, Workspace& ws,
+  // The fit over the prepared neighbours up to `end`, fading at `fade`.
+  bool fit(const Tangent_frame& f, const Level_end& end, double fade, double length, Workspace& ws,
            Local_curvature& out, Quadric_fit_error* error) const
   {
     bool ok = false;
     if(m_estimator == QUADRIC_FIT)
-      ok = quadric_fit(f, ws.points.data(), count, fade, length, out, error);
+      ok = quadric_fit(f, ws.shells.data(), end.shells, end.neighbors, fade, length, out, error);
     else
     {
-      const std::vector<Neighbor> prefix(ws.neighbors.begin(), ws.neighbors.begin() + std::ptrdiff_t(count));
+      const std::vector<Neighbor> prefix(ws.neighbors.begin(), ws.neighbors.begin() + std::ptrdiff_t(end.neighbors));
       ok = m_estimator == PAPER_EULER_FIT ? paper_euler_fit(f.n, prefix, out)
                                           : euler_least_squares_fit(f.n, prefix, out);
     }
@@ -215,14 +238,14 @@ private:
   {
     const Tangent_frame f = frame_from_normal(m_normals[v]);
     const double length = m_radii.back();
-    std::vector<std::size_t> kept;
+    std::vector<Level_end> ends;
     ws.search.balls(m_graph, v, m_radii);
-    prepare(v, f, length, m_radii.size(), ws, kept);
+    prepare(v, f, length, m_radii.size(), ws, ends);
     ws.fits.resize(m_radii.size());
     ws.errors.resize(m_radii.size());
     ws.fitted.assign(m_radii.size(), 0);
     for(std::size_t j = 0; j < m_radii.size(); ++j)
-      ws.fitted[j] = fit(f, kept[j], m_radii[j], length, ws, ws.fits[j], m_with_error[j] ? &ws.errors[j] : nullptr);
+      ws.fitted[j] = fit(f, ends[j], m_radii[j], length, ws, ws.fits[j], m_with_error[j] ? &ws.errors[j] : nullptr);
 
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
@@ -259,9 +282,9 @@ private:
       {
         const double radius = m_rules[r].radius * std::pow(1.5, widening);
         ws.search.balls(m_graph, v, std::vector<double>(1, radius));
-        prepare(v, f, radius, 1, ws, kept);
+        prepare(v, f, radius, 1, ws, ends);
         Local_curvature c;
-        if(fit(f, kept[0], radius, radius, ws, c, nullptr))
+        if(fit(f, ends[0], radius, radius, ws, c, nullptr))
           out[r] = Vertex_estimate{c, radius};
       }
   }
@@ -279,8 +302,8 @@ private:
       length = (std::max)(length, d);
     if(!(length > 0))
       return;
-    std::vector<std::size_t> kept;
-    prepare(v, f, length, m_rings, ws, kept);
+    std::vector<Level_end> ends;
+    prepare(v, f, length, m_rings, ws, ends);
     for(std::size_t r = 0; r < m_rules.size(); ++r)
     {
       const Neighborhood_rule& rule = m_rules[r];
@@ -293,7 +316,7 @@ private:
         for(std::size_t k = 0; k < ws.search.end(ring); ++k)
           reach = (std::max)(reach, distance[k]);
         Local_curvature c;
-        if(fit(f, kept[ring], reach, length, ws, c, nullptr))
+        if(fit(f, ends[ring], reach, length, ws, c, nullptr))
           out[r] = Vertex_estimate{c, reach};
       }
     }

@@ -169,90 +169,108 @@ struct Quadric_fit_error
   double per_noise = 0;           // standard error of H per unit of noise: mean_curvature / noise
 };
 
-// A neighbour of the vertex as the quadric fit sees it: its coordinates
-// (x, y, z) in the vertex's tangent frame divided by a length L, and its
-// squared distance to the vertex in model units.
-struct Quadric_point
+// Neighbours of a vertex as the quadric fit sees them, summed by shells:
+// the neighbours in one shell (about the same distance from the vertex, see
+// `quadric_shell_index()`) share their sums, and a fit weighs the whole
+// shell by its kernel at the shell's mean squared distance. The cost of a
+// fit is then that of its shells, not of its neighbours: the fits at
+// several radii around a vertex share one pass over the neighbours.
+// Coordinates (x, y, z) are in the vertex's tangent frame divided by a
+// length L; squared distances are in model units.
+struct Quadric_shell
 {
-  double x, y, z, squared_distance;
+  typedef Eigen::Matrix<double, 6, 1> Vector6;
+  typedef Eigen::Matrix<double, 6, 6> Matrix6;
+  Matrix6 products = Matrix6::Zero();  // sum of row row^T, row = (x^2, x y, y^2, x, y, 1)
+  Vector6 heights = Vector6::Zero();   // sum of z row
+  double squared_heights = 0;          // sum of z^2
+  double count = 0;
+  double squared_distances = 0;
+
+  void add(double x, double y, double z, double squared_distance)
+  {
+    Vector6 row;
+    row << x * x, x * y, y * y, x, y, 1;
+    products.noalias() += row * row.transpose();  // the full matrix: Eigen's packets beat a triangle
+    heights += z * row;
+    squared_heights += z * z;
+    count += 1;
+    squared_distances += squared_distance;
+  }
 };
+
+// Shells are a quarter of an octave of squared distance wide (distances
+// within 9% of each other), relative to the length L: shell 0 holds
+// everything closer than L / 256, where the kernel is flat anyway.
+constexpr int quadric_shells_per_octave = 4;
+constexpr int number_of_quadric_shells = 16 * quadric_shells_per_octave;
+inline int quadric_shell_index(double squared_distance, double squared_length)
+{
+  int exponent = 0;
+  const double mantissa = std::frexp(squared_distance / squared_length, &exponent);  // in [0.5, 1)
+  const int quarter = mantissa < 0.5946 ? 0 : mantissa < 0.7071 ? 1 : mantissa < 0.8409 ? 2 : 3;
+  return (std::max)(0, (std::min)(number_of_quadric_shells - 1,
+                                  (exponent - 1) * quadric_shells_per_octave + quarter + number_of_quadric_shells));
+}
 
 // Weighted least-squares fit of the height function
 //   z = A x^2 + B x y + C y^2 + D x + E y + F
-// to the vertex (at the origin) and the neighbours `points[0, count)`, in the
-// frame `f` of the vertex normal. The linear terms absorb the normal's
-// error and the constant term the vertex's own displacement (noise); the
-// curvature is that of the graph at the origin, positive where the surface
-// bends away from the normal. A neighbour at distance d has the weight
+// to the vertex (at the origin) and the neighbours summed in
+// `shells[0, shell_count)` (`neighbors` of them), in the frame `f` of the
+// vertex normal. The linear terms absorb the normal's error and the
+// constant term the vertex's own displacement (noise); the curvature is that
+// of the graph at the origin, positive where the surface bends away from
+// the normal. A neighbour at distance d has the weight
 // (1 - d^2 / (1.5 fade)^2)^4, which fades to 0 at 1.5 times `fade` (the
-// neighbourhood's radius); the points are in coordinates divided by
-// `length`, and the fit runs in coordinates divided by `fade`, which
-// condition it whatever the size of the neighbourhood.
+// neighbourhood's radius), taken at its shell's mean squared distance; the
+// shells are in coordinates divided by `length`, and the fit runs in
+// coordinates divided by `fade`, which condition it whatever the size of
+// the neighbourhood.
 // When `error` is given, it receives the uncertainty of the mean curvature
 // A + C for heights with independent noise of one standard deviation
 // (weighted least squares: the sandwich variance, and the residual variance
 // over the effective degrees of freedom; infinite with none left): what the
 // automatic neighbourhood weighs against the bias of larger neighbourhoods.
 // False with fewer than 5 neighbours or a singular system.
-inline bool quadric_fit(const Tangent_frame& f, const Quadric_point* points, std::size_t count, double fade,
-                        double length, Local_curvature& out, Quadric_fit_error* error = nullptr)
+inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std::size_t shell_count,
+                        std::size_t neighbors, double fade, double length, Local_curvature& out,
+                        Quadric_fit_error* error = nullptr)
 {
-  if(count < 5 || !(fade > 0))
+  if(neighbors < 5 || !(fade > 0))
     return false;
   // the normal equations X' W X, X' W z, z' W z (and X' W^2 X for the
-  // error), X's rows (x^2, x y, y^2, x, y, 1), the symmetric matrices packed
-  // column by column; the vertex's own row is (0, ..., 0, 1) with height 0
-  // and weight 1
-  double m[21] = {0}, m2[21] = {0}, b[6] = {0};
+  // error); the vertex's own row is (0, ..., 0, 1) with height 0 and weight 1
+  typedef Eigen::Matrix<double, 6, 1> Vector6;
+  typedef Eigen::Matrix<double, 6, 6> Matrix6;
+  Matrix6 normal_matrix = Matrix6::Zero(), squared_weights = Matrix6::Zero();
+  Vector6 rhs = Vector6::Zero();
   double zz = 0, weights = 1;
   const double fade2 = 2.25 * fade * fade;
-  for(std::size_t t = 0; t < count; ++t)
+  for(std::size_t t = 0; t < shell_count; ++t)
   {
-    const Quadric_point& q = points[t];
-    const double u = 1 - q.squared_distance / fade2;
+    const Quadric_shell& shell = shells[t];
+    const double u = 1 - shell.squared_distances / (shell.count * fade2);
     const double w = u > 0 ? u * u * u * u : 0.;
-    const double row[6] = {q.x * q.x, q.x * q.y, q.y * q.y, q.x, q.y, 1};
-    double weighted[6];
-    for(int i = 0; i < 6; ++i)
-    {
-      weighted[i] = w * row[i];
-      b[i] += q.z * weighted[i];
-    }
-    zz += w * q.z * q.z;
-    int k = 0;
-    for(int j = 0; j < 6; ++j)
-      for(int i = j; i < 6; ++i)
-        m[k++] += weighted[i] * row[j];
+    normal_matrix += w * shell.products;
+    rhs += w * shell.heights;
+    zz += w * shell.squared_heights;
     if(error != nullptr)
     {
-      k = 0;
-      for(int j = 0; j < 6; ++j)
-        for(int i = j; i < 6; ++i)
-          m2[k++] += w * weighted[i] * row[j];
-      weights += w;
+      squared_weights += (w * w) * shell.products;
+      weights += w * shell.count;
     }
   }
-  m[20] += 1;
-  m2[20] += 1;
+  normal_matrix(5, 5) += 1;
+  squared_weights(5, 5) += 1;
 
   // from coordinates divided by `length` to coordinates divided by `fade`:
   // the row scales by s = length / fade (quadratic terms by s^2), the height by s
-  typedef Eigen::Matrix<double, 6, 1> Vector6;
-  typedef Eigen::Matrix<double, 6, 6> Matrix6;
   const double s = length / fade;
-  const double scale[6] = {s * s, s * s, s * s, s, s, 1};
-  Matrix6 normal_matrix, squared_weights;
-  Vector6 rhs;
-  int k = 0;
-  for(int j = 0; j < 6; ++j)
-  {
-    rhs(j) = s * scale[j] * b[j];
-    for(int i = j; i < 6; ++i, ++k)
-    {
-      normal_matrix(i, j) = normal_matrix(j, i) = scale[i] * scale[j] * m[k];
-      squared_weights(i, j) = squared_weights(j, i) = scale[i] * scale[j] * m2[k];
-    }
-  }
+  Vector6 scale;
+  scale << s * s, s * s, s * s, s, s, 1;
+  normal_matrix = scale.asDiagonal() * normal_matrix * scale.asDiagonal();
+  squared_weights = scale.asDiagonal() * squared_weights * scale.asDiagonal();
+  rhs = s * scale.asDiagonal() * rhs;
   const Eigen::LDLT<Matrix6> ldlt(normal_matrix);
   const auto pivots = ldlt.vectorD();
   if(ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
