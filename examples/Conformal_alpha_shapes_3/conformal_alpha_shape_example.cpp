@@ -34,7 +34,7 @@ int main(int argc, char* argv[])
             << "spectrum: " << cas.number_of_alphas() << " distinct conformal values from "
             << cas.get_nth_alpha(1) << " to " << cas.get_nth_alpha(cas.number_of_alphas()) << "\n\n"
             << "facets by class at the paper's scales, and solid components\n"
-            << "quantile  alpha_hat   singular  regular  interior  solids\n";
+            << "quantile  a           singular  regular  interior  solids\n";
   for(double q : {0.10, 0.25, 0.35, 0.50})
   {
     cas.set_alpha(cas.alpha_at_quantile(q));
