@@ -4,13 +4,14 @@
 //
 //   evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large]
 //                     [--noise 0,0.1,0.3] [--neighborhoods LIST] [--rings 1,2,3]
-//                     [--normals] [--jet-samples 5000] [--no-jet] [--data DIR]
-//                     [--csv FILE] [--list] [--check-truth] [--help]
+//                     [--normals] [--scale-factor 1] [--jet-samples 5000] [--no-jet]
+//                     [--data DIR] [--csv FILE] [--list] [--check-truth] [--help]
 //
 // Neighbourhoods of the curvature fit (--neighborhoods, default
 // auto,k1,k2,k3,2s,4s,8s,16s): k2 a ring size, auto the automatic radius
 // per point, 4s a radius in measured sample spacings, 0.01 a radius in model
-// units; --rings 1,2,3 is short for k1,k2,k3.
+// units; --rings 1,2,3 is short for k1,k2,k3. --scale-factor F extracts the
+// surface at F times the automatic scale (default 1: the automatic scale).
 //
 // Cases (--list prints them): the closed surfaces ellipsoid (1 : 0.7 : 0.4),
 // torus (R = 1, r = 0.35), bumpy_sphere (r = 1 + 0.02 sin(10x) sin(10y)
@@ -112,17 +113,19 @@ CAS3::Neighborhood neighborhood_of(const std::string& item)
   return CAS3::Neighborhood::radius_from_string(item);
 }
 
-// The automatic scale, curvature with each neighbourhood: what
-// multiscale_curvatures(points, scales({Scale::automatic()}).neighborhoods(...))
-// computes, through Multiscale_curvatures to count the surface's parts.
+// The automatic scale (times `scale_factor`), curvature with each
+// neighbourhood: what multiscale_curvatures(points,
+// scales({Scale::automatic()}).neighborhoods(...)) computes, through
+// Multiscale_curvatures to count the surface's parts.
 // Values count only at input points that are vertices of the surface.
 std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vector<Vector>& normals,
-                                const std::vector<std::string>& neighborhoods)
+                                const std::vector<std::string>& neighborhoods, double scale_factor)
 {
   typedef CAS3::Multiscale_curvatures<Kernel> Analysis;
   const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(normals));
   Analysis::Surface surface;
-  const int components = int(analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface).number_of_parts);
+  const double alpha = scale_factor * analysis.alpha(CAS3::Scale::automatic());
+  const int components = int(analysis.extract_surface(alpha, surface).number_of_parts);
   const double spacing = analysis.noise().spacing;
   std::vector<Layer> layers;
   for(const std::string& item : neighborhoods)
@@ -386,6 +389,7 @@ struct Options
   std::vector<double> noises = {0, 0.1, 0.3};
   std::vector<std::string> neighborhoods = {"auto", "k1", "k2", "k3", "2s", "4s", "8s", "16s"};
   bool large = false, normals = false, jet = true;
+  double scale_factor = 1;
   std::size_t jet_samples = 5000;
   std::string data = CAS3_SHARED_DATA;
   std::string csv;
@@ -485,7 +489,7 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
   const std::clock_t start = std::clock();
   try
   {
-    layers = run_pipeline(s.points, o.normals ? s.normals : std::vector<Vector>(), o.neighborhoods);
+    layers = run_pipeline(s.points, o.normals ? s.normals : std::vector<Vector>(), o.neighborhoods, o.scale_factor);
   }
   catch(const std::exception& e)
   {
@@ -651,7 +655,7 @@ void evaluate_scan(const std::string& name, const std::string& file, const Optio
     const std::clock_t start = std::clock();
     try
     {
-      layers = run_pipeline(points, given ? normals : std::vector<Vector>(), o.neighborhoods);
+      layers = run_pipeline(points, given ? normals : std::vector<Vector>(), o.neighborhoods, o.scale_factor);
     }
     catch(const std::exception& e)
     {
@@ -738,6 +742,7 @@ int main(int argc, char* argv[])
         o.neighborhoods.clear();
         for(int k : parse_list<int>(argv[++i])) o.neighborhoods.push_back("k" + std::to_string(k));
       }
+      else if(arg == "--scale-factor" && value) o.scale_factor = std::stod(argv[++i]);
       else if(arg == "--jet-samples" && value) o.jet_samples = std::stoul(argv[++i]);
       else if(arg == "--data" && value) o.data = argv[++i];
       else if(arg == "--csv" && value) o.csv = argv[++i];
@@ -749,8 +754,8 @@ int main(int argc, char* argv[])
       {
         std::cout << "evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large] [--noise 0,0.1,0.3]\n"
                      "                  [--neighborhoods auto,k1,k2,k3,2s,4s,8s,16s] [--rings 1,2,3] [--normals]\n"
-                     "                  [--jet-samples 5000] [--no-jet] [--data DIR] [--csv FILE] [--list]\n"
-                     "                  [--check-truth]\n"
+                     "                  [--scale-factor 1] [--jet-samples 5000] [--no-jet] [--data DIR] [--csv FILE]\n"
+                     "                  [--list] [--check-truth]\n"
                      "neighbourhoods: k2 ring size, auto, 4s spacings, 0.01 model units (see evaluate_surfaces.cpp)\n";
         return EXIT_SUCCESS;
       }

@@ -49,69 +49,14 @@ struct Surface_report : Surface_counts
   std::size_t number_of_open_parts() const { return number_of_parts - number_of_closed_parts; }
 };
 
-/*!
-\ingroup PkgConformalAlphaShapes3Surface
+namespace internal {
 
-Writes into `pmesh` the surface of the conformal alpha shape `cas` at scale
-`a`: one oriented 2-manifold sheet per part of the sampled surface, closed
-where the sample is closed and with a border where it stops (a single view,
-a facade), whose faces are facets of the triangulation.
-
-The sheet is grown facet by facet from the smallest conformal value, as
-CGAL's `Advancing_front_surface_reconstruction` grows a surface, over the
-facets of the complex at `a`: a facet whose value exceeds `a` is never
-taken. (Facets between two cells of the complex are candidates too: under
-noise, the flat cells along the sampled surface enter the complex before
-the surface closes, and the facets between them are the surface.) The front only grows where the surface stays a manifold, so a
-noisy layer gives one sheet, not a shell with an inner wall, and an open
-scan one sheet with a border, not a two-sided slab. Vertices the front
-cannot attach are left off the surface (`number_of_points_off_surface`);
-so are, below the scale at which the surface closes, pockets too small to
-carry curvature once they are all the front finds (the manual, "The
-Advancing Front").
-
-Orientation (the manual, "Orientation"): with `reference_normals`, every
-sheet faces the side that the majority of the reference normals at its
-vertices point to; without, a closed sheet points out of the volume it
-encloses and an open sheet away from the centre of the surface's vertices.
-Parts that the front grew separately but that meet along border edges are
-one sheet, oriented alike, so that the pieces of one scan agree.
-
-Faces and vertices are added to `pmesh`, which is usually empty.
-
-\tparam ConformalAlphaShape a `Conformal_alpha_shape_3`
-\tparam PolygonMesh a model of `MutableFaceGraph`
-\tparam NamedParameters a sequence of named parameters
-
-\param cas the conformal alpha shape
-\param a the scale
-\param pmesh the output mesh
-\param np an optional sequence of named parameters among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the positions of the vertices of `pmesh`}
-    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and a point type constructible from three `double` as value}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, pmesh)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_input_index_map}
-    \cgalParamDescription{output: for each vertex added to `pmesh`, the index of its input point (the smallest one when duplicates collapsed into the vertex)}
-    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
-    \cgalParamDefault{not written}
-  \cgalParamNEnd
-  \cgalParamNBegin{reference_normals}
-    \cgalParamDescription{a normal per input point (a scanner's), or an empty range}
-    \cgalParamType{a random access range of `Vector_3`, indexed by input point}
-    \cgalParamDefault{empty}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns a `Surface_report`: faces, parts, and input points not on the surface.
-*/
-template <class ConformalAlphaShape, class PolygonMesh,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
-Surface_report extract_surface(const ConformalAlphaShape& cas, double a, PolygonMesh& pmesh,
-                               const NamedParameters& np = CGAL::parameters::default_values())
+// `extract_surface()` of a soup of `cas` (`advancing_front_soup()`, cut
+// at the scale by `pruned_soup()`): its parts joined into sheets and
+// oriented, written into `pmesh`.
+template <class ConformalAlphaShape, class PolygonMesh, class NamedParameters>
+Surface_report surface_of_soup(const ConformalAlphaShape& cas, Advancing_front_soup soup, PolygonMesh& pmesh,
+                               const NamedParameters& np)
 {
   typedef ConformalAlphaShape Cas;
   typedef typename Cas::Geom_traits::Vector_3 Vector;
@@ -139,7 +84,6 @@ Surface_report extract_surface(const ConformalAlphaShape& cas, double a, Polygon
   if(cas.dimension() < 3)
     return report;
 
-  internal::Advancing_front_soup soup = internal::advancing_front_soup(cas, a);
   std::vector<typename Cas::Vertex_handle> shape_vertex(cas.number_of_vertices());
   for(typename Cas::Vertex_handle v : cas.finite_vertex_handles())
     shape_vertex[v->vertex_index()] = v;
@@ -186,6 +130,79 @@ Surface_report extract_surface(const ConformalAlphaShape& cas, double a, Polygon
     on[s] = 1;
   report.number_of_points_off_surface = internal::number_of_points_off(cas, on);
   return report;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgConformalAlphaShapes3Surface
+
+Writes into `pmesh` the surface of the conformal alpha shape `cas` at scale
+`a`: one oriented 2-manifold sheet per part of the sampled surface, closed
+where the sample is closed and with a border where it stops (a single view,
+a facade), whose faces are facets of the triangulation.
+
+The sheet is grown facet by facet from the smallest conformal value, as
+CGAL's `Advancing_front_surface_reconstruction` grows a surface, over the
+Delaunay facets with no bound on the scale. (Facets between two cells of
+the complex are candidates too: under noise, the flat cells along the
+sampled surface enter the complex before the surface closes, and the
+facets between them are the surface.) The front only grows where the
+surface stays a manifold, so a noisy layer gives one sheet, not a shell
+with an inner wall, and an open scan one sheet with a border, not a
+two-sided slab. The surface at `a` is that sheet less its faces whose
+conformal value exceeds `a`: their neighbours get a border there, and
+pieces of fewer than 8 faces left on their own are dropped. Vertices the
+front cannot attach, or whose faces all exceed `a`, are left off the
+surface (`number_of_points_off_surface`); so are pockets too small to
+carry curvature once they are all the front finds (the manual, "The
+Advancing Front"). The front is grown anew at each call: to extract
+several scales of one shape, `Multiscale_curvatures` grows it once.
+
+Orientation (the manual, "Orientation"): with `reference_normals`, every
+sheet faces the side that the majority of the reference normals at its
+vertices point to; without, a closed sheet points out of the volume it
+encloses and an open sheet away from the centre of the surface's vertices.
+Parts that the front grew separately but that meet along border edges are
+one sheet, oriented alike, so that the pieces of one scan agree.
+
+Faces and vertices are added to `pmesh`, which is usually empty.
+
+\tparam ConformalAlphaShape a `Conformal_alpha_shape_3`
+\tparam PolygonMesh a model of `MutableFaceGraph`
+\tparam NamedParameters a sequence of named parameters
+
+\param cas the conformal alpha shape
+\param a the scale
+\param pmesh the output mesh
+\param np an optional sequence of named parameters among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{the positions of the vertices of `pmesh`}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and a point type constructible from three `double` as value}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, pmesh)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_input_index_map}
+    \cgalParamDescription{output: for each vertex added to `pmesh`, the index of its input point (the smallest one when duplicates collapsed into the vertex)}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
+  \cgalParamNBegin{reference_normals}
+    \cgalParamDescription{a normal per input point (a scanner's), or an empty range}
+    \cgalParamType{a random access range of `Vector_3`, indexed by input point}
+    \cgalParamDefault{empty}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns a `Surface_report`: faces, parts, and input points not on the surface.
+*/
+template <class ConformalAlphaShape, class PolygonMesh,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Surface_report extract_surface(const ConformalAlphaShape& cas, double a, PolygonMesh& pmesh,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::surface_of_soup(cas, internal::pruned_soup(internal::advancing_front_soup(cas), a), pmesh, np);
 }
 
 } // namespace Conformal_alpha_shapes_3

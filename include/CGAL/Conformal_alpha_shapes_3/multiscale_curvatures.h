@@ -194,20 +194,23 @@ public:
       case Scale::QUANTILE: return m_shape.alpha_at_quantile(scale.value());
       case Scale::AUTOMATIC: break;
     }
-    if(!(m_suggested >= 0))
-      m_suggested = m_extraction == ADVANCING_FRONT ? suggest_scale(m_shape) : suggest_alpha(m_shape);
+    if(!(m_suggested >= 0))  // suggest_scale() with its default coverage, on the front grown once
+      m_suggested = m_extraction == ADVANCING_FRONT ? internal::suggest_scale(front(), 0.99) : suggest_alpha(m_shape);
     return m_suggested;
   }
 
   /// Replaces `surface` with the surface at `alpha`, in input units and
-  /// indices.
+  /// indices. With the advancing front, every scale is cut from one front
+  /// grown with no bound (see `Conformal_alpha_shapes_3::extract_surface()`),
+  /// grown at the first call of this or of `alpha()` with the automatic
+  /// scale and kept.
   Surface_report extract_surface(double alpha, Surface& surface) const
   {
     surface.clear();
     auto input_index = surface.template add_property_map<Surface_vertex, std::size_t>("v:input_index").first;
     Surface_report report;
     if(m_extraction == ADVANCING_FRONT)
-      report = Conformal_alpha_shapes_3::extract_surface(m_shape, alpha, surface,
+      report = internal::surface_of_soup(m_shape, internal::pruned_soup(front(), alpha), surface,
         parameters::vertex_input_index_map(input_index, parameters::reference_normals(std::cref(m_reference_normals))));
     else
     {
@@ -315,6 +318,18 @@ public:
 
 private:
   typedef typename CGAL::dynamic_vertex_property_t<Point> Working_point_tag;
+
+  // The advancing front grown with no bound, once.
+  const internal::Advancing_front_soup& front() const
+  {
+    if(!m_front_grown)
+    {
+      m_front = internal::advancing_front_soup(m_shape);
+      m_front_grown = true;
+    }
+    return m_front;
+  }
+
   typedef typename boost::property_map<Surface, Working_point_tag>::const_type Working_point_map;
 
   // The surface's points in the working frame: the fits and the
@@ -537,6 +552,8 @@ private:
   Noise_estimate m_noise;
   Denoising_plan m_denoising;
   mutable double m_suggested = -1;
+  mutable internal::Advancing_front_soup m_front;  // see front()
+  mutable bool m_front_grown = false;
 };
 
 /*!

@@ -14,6 +14,24 @@
 
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+// `suggest_scale()` from the soup grown with no bound: the `coverage`
+// quantile over its vertices of the largest value among their faces.
+inline double suggest_scale(const Advancing_front_soup& soup, double coverage)
+{
+  std::vector<double> closing(soup.shape_vertex.size(), 0.0);
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+    for(std::size_t s : soup.triangles[t])
+      closing[s] = (std::max)(closing[s], soup.values[t]);
+  if(closing.empty())
+    return std::numeric_limits<double>::infinity();
+  const std::size_t k = std::min(closing.size() - 1, std::size_t(coverage * double(closing.size())));
+  std::nth_element(closing.begin(), closing.begin() + std::ptrdiff_t(k), closing.end());
+  return closing[k];
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgConformalAlphaShapes3Surface
@@ -42,17 +60,7 @@ double suggest_scale(const ConformalAlphaShape& cas, double coverage = 0.99)
     throw std::invalid_argument("suggest_scale: the shape has dimension below 3");
   if(!(coverage > 0 && coverage <= 1))
     throw std::invalid_argument("suggest_scale: coverage must be in (0, 1]");
-  const internal::Advancing_front_soup soup =
-    internal::advancing_front_soup(cas, std::numeric_limits<double>::infinity());
-  std::vector<double> closing(soup.shape_vertex.size(), 0.0);
-  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
-    for(std::size_t s : soup.triangles[t])
-      closing[s] = (std::max)(closing[s], soup.values[t]);
-  if(closing.empty())
-    return std::numeric_limits<double>::infinity();
-  const std::size_t k = std::min(closing.size() - 1, std::size_t(coverage * double(closing.size())));
-  std::nth_element(closing.begin(), closing.begin() + std::ptrdiff_t(k), closing.end());
-  return closing[k];
+  return internal::suggest_scale(internal::advancing_front_soup(cas), coverage);
 }
 
 } // namespace Conformal_alpha_shapes_3

@@ -26,13 +26,14 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
-// A triangle soup grown facet by facet over the Delaunay facets of the
-// conformal complex at scale `a` (the manual, "The Advancing Front"), by
-// CGAL's Advancing_front_surface_reconstruction with the conformal value of a
-// facet as its priority: smaller values first, and no facet whose value
-// exceeds `a`. The front only grows where the surface stays an oriented
-// 2-manifold, so the soup is one sheet per part of the sampled surface,
-// closed or with a border, consistently oriented within each part.
+// A triangle soup grown facet by facet over the finite Delaunay facets (the
+// manual, "The Advancing Front"), by CGAL's
+// Advancing_front_surface_reconstruction with the conformal value of a facet
+// as its priority: smaller values first, with no bound on the scale. The
+// front only grows where the surface stays an oriented 2-manifold, so the
+// soup is one sheet per part of the sampled surface, closed or with a
+// border, consistently oriented within each part. The soup at a scale `a`
+// is cut from it (`pruned_soup()`), so that one front serves every scale.
 //
 // The advancing front removes the vertices it cannot attach from the
 // triangulation it works on, so it runs on a copy of the shape's
@@ -62,11 +63,11 @@ struct Conformal_cell_values
 };
 
 // Each new part of the front starts from the smallest facet whose vertices
-// are all off the surface, found by a scan over every facet. Below the scale
-// at which the surface closes, the complex is a sponge of small pockets and
-// those scans would make the front quadratic: seeding stops once the last
-// 16 parts held fewer than 8 faces each on average (they are pockets too
-// small to carry curvature), or after 64 + n / 1000 parts.
+// are all off the surface, found by a scan over every facet. Where the front
+// finds only small pockets (points it could not attach, a sponge of noise)
+// those scans would make it quadratic: seeding stops once the last 16 parts
+// held fewer than 8 faces each on average (they are pockets too small to
+// carry curvature), or after 64 + n / 1000 parts.
 struct Front_seeding
 {
   int maximum_parts;
@@ -112,19 +113,17 @@ inline double facet_tie_breaker(std::size_t u, std::size_t v, std::size_t w)
   return double(h >> 11) / 9007199254740992.0;  // 2^53
 }
 
-// The front's priority: the conformal value of a facet of the complex at
-// `a`; other facets are never taken, nor any seed once seeding has stopped.
+// The front's priority: the conformal value of a facet (infinite facets and
+// the cells the front creates have an infinite value: never taken); no seed
+// is taken once seeding has stopped.
 struct Conformal_priority
 {
-  double a;
   Front_seeding* seeding;
 
   template <class AdvancingFront, class Cell_handle>
   double operator()(const AdvancingFront& front, Cell_handle& c, const int& i) const
   {
     const double value = c->info().facet[i];
-    if(!(value <= a))
-      return std::numeric_limits<double>::infinity();
     const bool seed = c->vertex((i + 1) & 3)->is_exterior() && c->vertex((i + 2) & 3)->is_exterior()
                       && c->vertex((i + 3) & 3)->is_exterior();
     if(seed && !seeding->may_seed(front))
@@ -207,8 +206,117 @@ inline void put_in_canonical_order(Advancing_front_soup& soup)
   soup = std::move(ordered);
 }
 
+// The soup at scale `a` cut from the soup grown with no bound: the
+// triangles whose value exceeds `a` are removed and their neighbours get a
+// border there; a vertex whose triangles fall apart into several fans gets
+// one copy per fan (as where the front met itself), so that each soup vertex
+// keeps one umbrella; the parts left with fewer than 8 triangles are
+// dropped (a facet or a few that the front grew past a larger one: bounded
+// at `a`, it would not reach them, and they are too small to carry
+// curvature); vertices left without triangles are dropped. Vertices keep
+// their order (copies of one vertex by their first triangle), triangles
+// theirs, so the cut of a canonical soup is canonical.
+inline Advancing_front_soup pruned_soup(const Advancing_front_soup& soup, double a)
+{
+  const std::size_t smallest_part = 8;
+  const std::size_t none = Advancing_front_soup::no_neighbor;
+  const std::size_t nt = soup.triangles.size();
+  std::vector<char> keep(nt, 0);
+  for(std::size_t t = 0; t < nt; ++t)
+    keep[t] = soup.values[t] <= a ? 1 : 0;
+  auto kept_neighbor = [&](std::size_t t, int k) {
+    const std::size_t u = soup.neighbors[t][k];
+    return u != none && keep[u] ? u : none;
+  };
+
+  // parts across kept edges, the small ones dropped
+  std::vector<char> seen(nt, 0);
+  std::vector<std::size_t> members;
+  for(std::size_t seed = 0; seed < nt; ++seed)
+  {
+    if(!keep[seed] || seen[seed])
+      continue;
+    members.assign(1, seed);
+    seen[seed] = 1;
+    for(std::size_t i = 0; i < members.size(); ++i)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t u = kept_neighbor(members[i], k);
+        if(u != none && !seen[u])
+        {
+          seen[u] = 1;
+          members.push_back(u);
+        }
+      }
+    if(members.size() < smallest_part)
+      for(std::size_t t : members)
+        keep[t] = 0;
+  }
+
+  // fans: the corners (3 t + k) of each vertex joined across kept edges
+  std::vector<std::size_t> root(3 * nt);
+  std::iota(root.begin(), root.end(), std::size_t(0));
+  auto find = [&](std::size_t c) {
+    while(root[c] != c)
+      c = root[c] = root[root[c]];
+    return c;
+  };
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int k = 0; k < 3 && keep[t]; ++k)
+      for(int e : {(k + 1) % 3, (k + 2) % 3})  // the two edges at corner k
+      {
+        const std::size_t u = kept_neighbor(t, e);
+        if(u == none)
+          continue;
+        for(int j = 0; j < 3; ++j)
+          if(soup.triangles[u][j] == soup.triangles[t][k])
+          {
+            const std::size_t x = find(3 * t + k), y = find(3 * u + j);
+            root[(std::max)(x, y)] = (std::min)(x, y);
+          }
+      }
+
+  // one vertex per fan, by old vertex and then by first corner
+  std::vector<std::pair<std::size_t, std::size_t> > fans;  // (old vertex, first corner)
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int k = 0; k < 3 && keep[t]; ++k)
+      if(find(3 * t + k) == 3 * t + k)
+        fans.emplace_back(soup.triangles[t][k], 3 * t + k);
+  std::sort(fans.begin(), fans.end());
+  Advancing_front_soup pruned;
+  std::vector<std::size_t> vertex_of_fan(3 * nt, none);
+  for(const std::pair<std::size_t, std::size_t>& fan : fans)
+  {
+    vertex_of_fan[fan.second] = pruned.shape_vertex.size();
+    pruned.shape_vertex.push_back(soup.shape_vertex[fan.first]);
+  }
+  std::vector<std::size_t> new_triangle(nt, none);
+  for(std::size_t t = 0; t < nt; ++t)
+    if(keep[t])
+    {
+      new_triangle[t] = pruned.values.size();
+      pruned.values.push_back(soup.values[t]);
+    }
+  pruned.triangles.reserve(pruned.values.size());
+  pruned.neighbors.reserve(pruned.values.size());
+  for(std::size_t t = 0; t < nt; ++t)
+    if(keep[t])
+    {
+      std::array<std::size_t, 3> triangle, neighbor;
+      for(int k = 0; k < 3; ++k)
+      {
+        triangle[k] = vertex_of_fan[find(3 * t + k)];
+        neighbor[k] = soup.neighbors[t][k] == none ? none : new_triangle[soup.neighbors[t][k]];
+      }
+      pruned.triangles.push_back(triangle);
+      pruned.neighbors.push_back(neighbor);
+    }
+  return pruned;
+}
+
+// The soup grown with no bound on the scale.
 template <class Cas>
-Advancing_front_soup advancing_front_soup(const Cas& cas, double a)
+Advancing_front_soup advancing_front_soup(const Cas& cas)
 {
   typedef typename Cas::Geom_traits Gt;
   typedef Advancing_front_surface_reconstruction_vertex_base_3<Gt> Vb;
@@ -256,7 +364,7 @@ Advancing_front_soup advancing_front_soup(const Cas& cas, double a)
     triangulation.tds().copy_tds(cas.tds(), cas.infinite_vertex(), Convert_vertex{infinite, no_vertex},
                                  Convert_cell{&cas}));
   Front_seeding seeding(cas.number_of_vertices());
-  Front front(triangulation, Conformal_priority{a, &seeding});
+  Front front(triangulation, Conformal_priority{&seeding});
   front.run();
 
   typedef typename Front::Triangulation_data_structure_2 Tds_2;
