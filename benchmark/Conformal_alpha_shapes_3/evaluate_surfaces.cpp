@@ -5,7 +5,7 @@
 //   evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large]
 //                     [--noise 0,0.1,0.3] [--neighborhoods LIST] [--rings 1,2,3]
 //                     [--normals] [--scale-factor 1] [--jet-samples 5000] [--no-jet]
-//                     [--data DIR] [--csv FILE] [--list] [--check-truth] [--help]
+//                     [--data DIR] [--csv FILE] [--write-points DIR] [--list] [--check-truth] [--help]
 //
 // Neighbourhoods of the curvature fit (--neighborhoods, default
 // auto,k1,k2,k3,2s,4s,8s,16s): k2 a ring size, auto the automatic radius
@@ -51,6 +51,8 @@
 // neighbourhood, and the per-neighbourhood column holds orientation.
 // The pipeline is called in one place only: run_pipeline().
 // --check-truth compares the generators' truth with closed forms and exits.
+// --write-points DIR also writes each synthetic sample as DIR/NAME_N_NOISE.xyz
+// (the manual's bump figures are made from dent_bumps_20000_0.xyz).
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -393,6 +395,7 @@ struct Options
   std::size_t jet_samples = 5000;
   std::string data = CAS3_SHARED_DATA;
   std::string csv;
+  std::string write_points;  // a folder, or empty
   bool selected(const std::string& name) const
   {
     return cases.empty() || std::find(cases.begin(), cases.end(), name) != cases.end();
@@ -484,6 +487,15 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
                         const std::vector<std::string>& names, const std::vector<std::vector<int> >& jet_ks,
                         bool planar, double noise, const Options& o, std::vector<Row>& rows, std::ostream* csv)
 {
+  if(!o.write_points.empty())
+  {
+    char name[64];
+    std::snprintf(name, sizeof name, "_%zu_%g.xyz", s.points.size(), noise);
+    std::ofstream out(o.write_points + "/" + names.front() + name);
+    out.precision(17);
+    for(const Point& p : s.points)
+      out << p << "\n";
+  }
   std::vector<Layer> layers;
   std::string failure;
   const std::clock_t start = std::clock();
@@ -746,6 +758,7 @@ int main(int argc, char* argv[])
       else if(arg == "--jet-samples" && value) o.jet_samples = std::stoul(argv[++i]);
       else if(arg == "--data" && value) o.data = argv[++i];
       else if(arg == "--csv" && value) o.csv = argv[++i];
+      else if(arg == "--write-points" && value) o.write_points = argv[++i];
       else if(arg == "--large") o.large = true;
       else if(arg == "--normals") o.normals = true;
       else if(arg == "--no-jet") o.jet = false;
@@ -755,7 +768,7 @@ int main(int argc, char* argv[])
         std::cout << "evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large] [--noise 0,0.1,0.3]\n"
                      "                  [--neighborhoods auto,k1,k2,k3,2s,4s,8s,16s] [--rings 1,2,3] [--normals]\n"
                      "                  [--scale-factor 1] [--jet-samples 5000] [--no-jet] [--data DIR] [--csv FILE]\n"
-                     "                  [--list] [--check-truth]\n"
+                     "                  [--write-points DIR] [--list] [--check-truth]\n"
                      "neighbourhoods: k2 ring size, auto, 4s spacings, 0.01 model units (see evaluate_surfaces.cpp)\n";
         return EXIT_SUCCESS;
       }
