@@ -418,8 +418,8 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
   });
   const CAS3::Scale scale = CAS3::Scale::automatic();
   double a = 0;
-  m.stage("alpha(Scale::automatic())", "stage", [&] {
-    a = analysis->alpha(scale);
+  m.stage("scale_value(Scale::automatic())", "stage", [&] {
+    a = analysis->scale_value(scale);
     return "a = " + number(a);
   });
   Analysis::Surface surface;

@@ -126,7 +126,7 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
   typedef CAS3::Multiscale_curvatures<Kernel> Analysis;
   const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(normals));
   Analysis::Surface surface;
-  const double alpha = scale_factor * analysis.alpha(CAS3::Scale::automatic());
+  const double alpha = scale_factor * analysis.scale_value(CAS3::Scale::automatic());
   const int components = int(analysis.extract_surface(alpha, surface).number_of_parts);
   const double spacing = analysis.noise().spacing;
   std::vector<Layer> layers;

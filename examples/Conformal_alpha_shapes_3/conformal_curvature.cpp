@@ -472,7 +472,7 @@ int run(const Options& o)
   std::vector<cas3::Layer> layers;
   for(const CAS3::Scale& scale : o.scales)
   {
-    const double a = analysis->alpha(scale);
+    const double a = analysis->scale_value(scale);
     Analysis::Surface surface;
     const CAS3::Surface_report report = analysis->extract_surface(a, surface);
     progress("scale " + scale.label() + ": surface of " + std::to_string(report.number_of_faces) + " faces");

@@ -46,7 +46,7 @@ int main(int argc, char* argv[])
     }
     std::nth_element(H.begin(), H.begin() + std::ptrdiff_t(H.size() / 2), H.end());
     std::printf("%-6s %-14s %-11.4g %10zu %14zu %9zu %9.4g\n", layer.scale.label().c_str(),
-                layer.neighborhood.label().c_str(), layer.alpha, count[CAS3::SURFACE_VERTEX],
+                layer.neighborhood.label().c_str(), layer.a, count[CAS3::SURFACE_VERTEX],
                 count[CAS3::NEAREST_SURFACE_POINT], count[CAS3::NO_VALUE], H.empty() ? 0.0 : H[H.size() / 2]);
   }
   return EXIT_SUCCESS;

@@ -98,7 +98,7 @@ Answer pipeline(const std::vector<Point>& p)
 {
   CAS3::Multiscale_curvatures<K> analysis(p.begin(), p.end());
   CAS3::Multiscale_curvatures<K>::Surface surface;
-  const CAS3::Surface_report report = analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+  const CAS3::Surface_report report = analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
   BOOST_TEST(report.number_of_input_points == p.size());
   const auto c = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
   BOOST_REQUIRE(c.size() == p.size());

@@ -345,7 +345,7 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
   const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(given_normals));
   Analysis::Surface surface;
   Sheet_facts facts;
-  facts.report = analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+  facts.report = analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
   BOOST_TEST(CGAL::is_valid_polygon_mesh(surface));
   BOOST_TEST(facts.report.number_of_faces == surface.number_of_faces());
   const auto curvatures = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(1));
@@ -488,7 +488,7 @@ BOOST_AUTO_TEST_CASE(each_point_follows_its_given_normal)
   }
   const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(given));
   Analysis::Surface surface;
-  analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+  analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
   const auto values = analysis.estimate_curvatures(surface, CAS3::Neighborhood::spacings(4));
   auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
   auto normal = surface.property_map<Analysis::Surface_vertex, Vector>("v:normal").first;
@@ -565,7 +565,7 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
   const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(4000, 1, 1, 1);
   const Analysis analysis(pts.begin(), pts.end());
   Analysis::Surface surface;
-  analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+  analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
   // remove the cap z > 0.8 from the surface
   std::vector<Analysis::Surface::Face_index> cap;
   for(auto f : surface.faces())
@@ -637,7 +637,7 @@ BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
   auto mean_curvatures = [](const std::vector<Point>& p, const CAS3::Neighborhood& n) {
     const Analysis analysis(p.begin(), p.end());
     Analysis::Surface surface;
-    analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+    analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
     std::vector<double> H;
     for(const auto& c : analysis.estimate_curvatures(surface, n))
       H.push_back(c.mean_curvature);
@@ -686,7 +686,7 @@ BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
     const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(5000, 1, 1, 1, noise * spacing, 3);
     const Analysis analysis(pts.begin(), pts.end(), CAS3::parameters::denoising(CAS3::NEVER_DENOISE));
     Analysis::Surface surface;
-    analysis.extract_surface(analysis.alpha(CAS3::Scale::automatic()), surface);
+    analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
     std::vector<double> r;
     for(const auto& c : analysis.estimate_curvatures(surface, CAS3::Neighborhood::automatic()))
       if(std::isfinite(c.radius))

@@ -185,8 +185,8 @@ public:
   /// whether reference normals orient the surfaces
   bool has_reference_normals() const { return !m_reference_normals.empty(); }
 
-  /// The absolute value of a requested scale (the automatic one is computed once).
-  double alpha(const Scale& scale) const
+  /// The value of `a` for a requested scale (the automatic one is computed once).
+  double scale_value(const Scale& scale) const
   {
     switch(scale.kind())
     {
@@ -199,23 +199,23 @@ public:
     return m_suggested;
   }
 
-  /// Replaces `surface` with the surface at `alpha`, in input units and
+  /// Replaces `surface` with the surface at scale `a`, in input units and
   /// indices. With the advancing front, every scale is cut from one front
   /// grown with no bound (see `Conformal_alpha_shapes_3::extract_surface()`),
-  /// grown at the first call of this or of `alpha()` with the automatic
+  /// grown at the first call of this or of `scale_value()` with the automatic
   /// scale and kept.
-  Surface_report extract_surface(double alpha, Surface& surface) const
+  Surface_report extract_surface(double a, Surface& surface) const
   {
     surface.clear();
     auto input_index = surface.template add_property_map<Surface_vertex, std::size_t>("v:input_index").first;
     Surface_report report;
     if(m_extraction == ADVANCING_FRONT)
-      report = internal::surface_of_soup(m_shape, internal::pruned_soup(front(), alpha), surface,
+      report = internal::surface_of_soup(m_shape, internal::pruned_soup(front(), a), surface,
         parameters::vertex_input_index_map(input_index, parameters::reference_normals(std::cref(m_reference_normals))));
     else
     {
       static_cast<Surface_counts&>(report) =
-        extract_boundary_surface(m_shape, alpha, surface, parameters::vertex_input_index_map(input_index));
+        extract_boundary_surface(m_shape, a, surface, parameters::vertex_input_index_map(input_index));
       auto part = get(CGAL::dynamic_face_property_t<std::size_t>(), surface);
       report.number_of_parts = CGAL::Polygon_mesh_processing::connected_components(surface, part);
       report.number_of_closed_parts = report.number_of_parts;  // the boundary of a solid is closed
@@ -564,7 +564,7 @@ template <class Kernel>
 struct Curvature_layer
 {
   Scale scale;                        ///< as requested
-  double alpha;                       ///< its absolute value
+  double a;                           ///< its value
   Neighborhood neighborhood;          ///< as requested
   Surface_report surface;             ///< what the extraction did
   std::vector<Point_curvature<Kernel> > points;  ///< by input index
@@ -640,10 +640,10 @@ multiscale_curvatures(const PointRange& points, const NamedParameters& np = CGAL
   for(const Scale& scale : scales)
   {
     typename Multiscale_curvatures<Kernel>::Surface surface;
-    const double alpha = analysis.alpha(scale);
-    const Surface_report report = analysis.extract_surface(alpha, surface);
+    const double a = analysis.scale_value(scale);
+    const Surface_report report = analysis.extract_surface(a, surface);
     for(const Neighborhood& neighborhood : neighborhoods)
-      layers.push_back(Curvature_layer<Kernel>{scale, alpha, neighborhood, report,
+      layers.push_back(Curvature_layer<Kernel>{scale, a, neighborhood, report,
                                                analysis.estimate_curvatures(surface, neighborhood, estimator)});
   }
   return layers;
