@@ -1,0 +1,225 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_TRIANGLE_SOUP_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_TRIANGLE_SOUP_H
+
+// The surface as the advancing front leaves it (advancing_front_facets.h),
+// a soup of triangles with their neighbours, and what is done to it before
+// it becomes a mesh: a canonical order, and the cut at a scale.
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <numeric>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+// A surface as triangles over vertices of a conformal alpha shape, with
+// each triangle's neighbours and conformal value.
+struct Advancing_front_soup
+{
+  // vertex of the shape (its `vertex_index()`) of each soup vertex; a shape
+  // vertex where the front met itself appears once per sheet through it
+  std::vector<std::size_t> shape_vertex;
+  // triangles over soup vertices, consistently oriented in each part
+  std::vector<std::array<std::size_t, 3> > triangles;
+  // for each triangle, its three neighbours across the edges opposite to its
+  // vertices (an index into `triangles`), or `no_neighbor` on a border
+  std::vector<std::array<std::size_t, 3> > neighbors;
+  // the conformal value of each triangle's facet
+  std::vector<double> values;
+  static constexpr std::size_t no_neighbor = std::size_t(-1);
+};
+
+// Puts the soup in an order that depends only on its triangles, not on the
+// order in which the front grew them (which follows memory addresses where
+// the front's own criteria tie): vertices by shape vertex, triangles
+// lexicographically, each starting at its smallest vertex.
+inline void put_in_canonical_order(Advancing_front_soup& soup)
+{
+  const std::size_t nv = soup.shape_vertex.size(), nt = soup.triangles.size();
+  typedef std::array<std::size_t, 3> Key;
+  auto sorted = [&](const std::array<std::size_t, 3>& t) {
+    Key k = {{soup.shape_vertex[t[0]], soup.shape_vertex[t[1]], soup.shape_vertex[t[2]]}};
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  // a vertex standing for a shape vertex more than once is told apart by
+  // the smallest triangle it is on
+  const std::size_t big = std::size_t(-1);
+  std::vector<Key> first_triangle(nv, Key{{big, big, big}});
+  for(const std::array<std::size_t, 3>& t : soup.triangles)
+    for(std::size_t v : t)
+      first_triangle[v] = (std::min)(first_triangle[v], sorted(t));
+  std::vector<std::size_t> vertex_order(nv);
+  std::iota(vertex_order.begin(), vertex_order.end(), std::size_t(0));
+  std::sort(vertex_order.begin(), vertex_order.end(), [&](std::size_t x, std::size_t y) {
+    return std::tie(soup.shape_vertex[x], first_triangle[x]) < std::tie(soup.shape_vertex[y], first_triangle[y]);
+  });
+  std::vector<std::size_t> new_vertex(nv);
+  std::vector<std::size_t> shape_vertex(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    new_vertex[vertex_order[i]] = i;
+    shape_vertex[i] = soup.shape_vertex[vertex_order[i]];
+  }
+
+  // triangles renumbered and rotated to start at their smallest vertex,
+  // with their neighbours (opposite to each vertex) rotated alike
+  std::vector<std::array<std::size_t, 3> > triangles(nt), neighbors(nt);
+  for(std::size_t t = 0; t < nt; ++t)
+  {
+    std::array<std::size_t, 3> v;
+    for(int k = 0; k < 3; ++k)
+      v[k] = new_vertex[soup.triangles[t][k]];
+    const int r = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    for(int k = 0; k < 3; ++k)
+    {
+      triangles[t][k] = v[(k + r) % 3];
+      neighbors[t][k] = soup.neighbors[t][(k + r) % 3];
+    }
+  }
+  std::vector<std::size_t> triangle_order(nt);
+  std::iota(triangle_order.begin(), triangle_order.end(), std::size_t(0));
+  std::sort(triangle_order.begin(), triangle_order.end(),
+            [&](std::size_t x, std::size_t y) { return triangles[x] < triangles[y]; });
+  std::vector<std::size_t> new_triangle(nt);
+  for(std::size_t i = 0; i < nt; ++i)
+    new_triangle[triangle_order[i]] = i;
+  Advancing_front_soup ordered;
+  ordered.shape_vertex = std::move(shape_vertex);
+  ordered.triangles.reserve(nt);
+  ordered.neighbors.reserve(nt);
+  ordered.values.reserve(nt);
+  for(std::size_t t : triangle_order)
+  {
+    ordered.triangles.push_back(triangles[t]);
+    std::array<std::size_t, 3> n = neighbors[t];
+    for(std::size_t& x : n)
+      if(x != Advancing_front_soup::no_neighbor)
+        x = new_triangle[x];
+    ordered.neighbors.push_back(n);
+    ordered.values.push_back(soup.values[t]);
+  }
+  soup = std::move(ordered);
+}
+
+// The soup at scale `a` cut from the soup grown with no bound: the
+// triangles whose value exceeds `a` are removed and their neighbours get a
+// border there; a vertex whose triangles fall apart into several fans gets
+// one copy per fan (as where the front met itself), so that each soup vertex
+// keeps one umbrella; the parts left with fewer than 8 triangles are
+// dropped (a facet or a few that the front grew past a larger one: bounded
+// at `a`, it would not reach them, and they are too small to carry
+// curvature); vertices left without triangles are dropped. Vertices keep
+// their order (copies of one vertex by their first triangle), triangles
+// theirs, so the cut of a canonical soup is canonical.
+inline Advancing_front_soup pruned_soup(const Advancing_front_soup& soup, double a)
+{
+  const std::size_t smallest_part = 8;
+  const std::size_t none = Advancing_front_soup::no_neighbor;
+  const std::size_t nt = soup.triangles.size();
+  std::vector<char> keep(nt, 0);
+  for(std::size_t t = 0; t < nt; ++t)
+    keep[t] = soup.values[t] <= a ? 1 : 0;
+  auto kept_neighbor = [&](std::size_t t, int k) {
+    const std::size_t u = soup.neighbors[t][k];
+    return u != none && keep[u] ? u : none;
+  };
+
+  // parts across kept edges, the small ones dropped
+  std::vector<char> seen(nt, 0);
+  std::vector<std::size_t> members;
+  for(std::size_t seed = 0; seed < nt; ++seed)
+  {
+    if(!keep[seed] || seen[seed])
+      continue;
+    members.assign(1, seed);
+    seen[seed] = 1;
+    for(std::size_t i = 0; i < members.size(); ++i)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t u = kept_neighbor(members[i], k);
+        if(u != none && !seen[u])
+        {
+          seen[u] = 1;
+          members.push_back(u);
+        }
+      }
+    if(members.size() < smallest_part)
+      for(std::size_t t : members)
+        keep[t] = 0;
+  }
+
+  // fans: the corners (3 t + k) of each vertex joined across kept edges
+  std::vector<std::size_t> root(3 * nt);
+  std::iota(root.begin(), root.end(), std::size_t(0));
+  auto find = [&](std::size_t c) {
+    while(root[c] != c)
+      c = root[c] = root[root[c]];
+    return c;
+  };
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int k = 0; k < 3 && keep[t]; ++k)
+      for(int e : {(k + 1) % 3, (k + 2) % 3})  // the two edges at corner k
+      {
+        const std::size_t u = kept_neighbor(t, e);
+        if(u == none)
+          continue;
+        for(int j = 0; j < 3; ++j)
+          if(soup.triangles[u][j] == soup.triangles[t][k])
+          {
+            const std::size_t x = find(3 * t + k), y = find(3 * u + j);
+            root[(std::max)(x, y)] = (std::min)(x, y);
+          }
+      }
+
+  // one vertex per fan, by old vertex and then by first corner
+  std::vector<std::pair<std::size_t, std::size_t> > fans;  // (old vertex, first corner)
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int k = 0; k < 3 && keep[t]; ++k)
+      if(find(3 * t + k) == 3 * t + k)
+        fans.emplace_back(soup.triangles[t][k], 3 * t + k);
+  std::sort(fans.begin(), fans.end());
+  Advancing_front_soup pruned;
+  std::vector<std::size_t> vertex_of_fan(3 * nt, none);
+  for(const std::pair<std::size_t, std::size_t>& fan : fans)
+  {
+    vertex_of_fan[fan.second] = pruned.shape_vertex.size();
+    pruned.shape_vertex.push_back(soup.shape_vertex[fan.first]);
+  }
+  std::vector<std::size_t> new_triangle(nt, none);
+  for(std::size_t t = 0; t < nt; ++t)
+    if(keep[t])
+    {
+      new_triangle[t] = pruned.values.size();
+      pruned.values.push_back(soup.values[t]);
+    }
+  pruned.triangles.reserve(pruned.values.size());
+  pruned.neighbors.reserve(pruned.values.size());
+  for(std::size_t t = 0; t < nt; ++t)
+    if(keep[t])
+    {
+      std::array<std::size_t, 3> triangle, neighbor;
+      for(int k = 0; k < 3; ++k)
+      {
+        triangle[k] = vertex_of_fan[find(3 * t + k)];
+        neighbor[k] = soup.neighbors[t][k] == none ? none : new_triangle[soup.neighbors[t][k]];
+      }
+      pruned.triangles.push_back(triangle);
+      pruned.neighbors.push_back(neighbor);
+    }
+  return pruned;
+}
+
+} // namespace internal
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_TRIANGLE_SOUP_H
