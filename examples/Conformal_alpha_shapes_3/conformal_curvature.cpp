@@ -464,8 +464,9 @@ int run(const Options& o)
   summary << "\n" << noise << smoothing_text
           << "surface: " << (o.extraction == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
           << "; orientation: "
-          << (analysis->has_reference_normals() ? "the majority of the input normals, per sheet; values per point"
-                                                : "closed sheets outward, open sheets away from the centre")
+          << (analysis->has_reference_normals()
+                ? "the majority of the input normals, per sheet; values per point"
+                : "closed sheets outward, open sheets away from the centre, with those they continue across gaps")
           << "\n"
           << "layer               a  own vertex  nearest  no value  radius(median)"
              "    H:  5%          50%          95%      K:  5%          50%          95%\n";

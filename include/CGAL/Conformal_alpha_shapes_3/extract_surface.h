@@ -96,7 +96,11 @@ Surface_report surface_of_soup(const ConformalAlphaShape& cas, Advancing_front_s
     internal::cut_at_reference_folds<Vector>(soup, point, reference);
   const internal::Soup_parts parts = internal::soup_parts(soup);
   const internal::Soup_sheets sheets = internal::soup_sheets(soup, parts);
-  const std::vector<char> reverse = internal::parts_to_reverse<Vector>(soup, parts, sheets, point, reference, has_reference);
+  const internal::Sheet_groups groups = has_reference
+    ? internal::Sheet_groups::one_per_sheet(sheets.size())
+    : internal::join_open_sheets_across_gaps<Vector>(soup, parts, sheets, point);
+  const std::vector<char> reverse =
+    internal::parts_to_reverse<Vector>(soup, parts, sheets, groups, point, reference, has_reference);
 
   report.number_of_parts = sheets.size();
   for(std::size_t s = 0; s < sheets.size(); ++s)
@@ -164,7 +168,14 @@ sheet faces the side that the majority of the reference normals at its
 vertices point to; without, a closed sheet points out of the volume it
 encloses and an open sheet away from the centre of the surface's vertices.
 Parts that the front grew separately but that meet along border edges are
-one sheet, oriented alike, so that the pieces of one scan agree.
+one sheet, oriented alike, so that the pieces of one scan agree. Without
+reference normals, open sheets that continue each other across a gap the
+front did not bridge (border vertices within 8 local spacings of each
+other, the gap within 45 degrees of their tangent planes, their normals
+within 45 degrees of parallel: a strip the scan missed, a step whose riser
+it did not sample) face alike too, and point away from the centre
+together; sheets offset along their normals (the two faces of a thin wall)
+are not joined, nor are closed sheets.
 
 Faces and vertices are added to `pmesh`, which is usually empty.
 

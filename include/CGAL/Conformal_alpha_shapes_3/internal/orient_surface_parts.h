@@ -6,6 +6,12 @@
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
 
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -147,6 +153,38 @@ inline Soup_parts soup_parts(const Advancing_front_soup& soup)
   return parts;
 }
 
+// Union-find over elements (parts, sheets) that also keeps whether each
+// element is reversed relative to the root of its class.
+struct Parity_union_find
+{
+  std::vector<std::size_t> root;
+  std::vector<char> flip;
+
+  explicit Parity_union_find(std::size_t n) : root(n), flip(n, 0)
+  {
+    std::iota(root.begin(), root.end(), std::size_t(0));
+  }
+
+  // (root, reversed relative to it)
+  std::pair<std::size_t, char> find(std::size_t x) const
+  {
+    char f = 0;
+    while(root[x] != x) { f ^= flip[x]; x = root[x]; }
+    return std::make_pair(x, f);
+  }
+
+  // puts `x` and `y` in one class, `y` reversed relative to `x` when
+  // `reversed`; nothing when they already are in one class
+  void join(std::size_t x, std::size_t y, bool reversed)
+  {
+    const std::pair<std::size_t, char> a = find(x), b = find(y);
+    if(a.first == b.first)
+      return;
+    root[b.first] = a.first;
+    flip[b.first] = char(a.second ^ b.second ^ (reversed ? 1 : 0));
+  }
+};
+
 // Parts that meet along border edges (the front grew them from different
 // seeds) are one sheet of the sampled surface: they are oriented alike, each
 // edge shared by two parts being passed in opposite directions. Each part is
@@ -197,24 +235,9 @@ inline Soup_sheets soup_sheets(const Advancing_front_soup& soup, const Soup_part
     links.emplace_back(vote.second, vote.first);
   std::sort(links.begin(), links.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
 
-  // union-find with the orientation of each part relative to its root
-  std::vector<std::size_t> root(parts.size());
-  std::vector<char> flip(parts.size(), 0);
-  std::iota(root.begin(), root.end(), std::size_t(0));
-  auto find = [&](std::size_t p) {
-    char f = 0;
-    while(root[p] != p) { f ^= flip[p]; p = root[p]; }
-    return std::make_pair(p, f);
-  };
+  Parity_union_find classes(parts.size());
   for(const auto& link : links)
-  {
-    const auto a = find(std::get<0>(link.second));
-    const auto b = find(std::get<1>(link.second));
-    if(a.first == b.first)
-      continue;
-    root[b.first] = a.first;
-    flip[b.first] = char(a.second ^ b.second ^ (std::get<2>(link.second) ? 1 : 0));
-  }
+    classes.join(std::get<0>(link.second), std::get<1>(link.second), std::get<2>(link.second));
 
   Soup_sheets sheets;
   const std::size_t none = std::size_t(-1);
@@ -223,7 +246,7 @@ inline Soup_sheets soup_sheets(const Advancing_front_soup& soup, const Soup_part
   sheets.reverse_in_sheet.resize(parts.size());
   for(std::size_t p = 0; p < parts.size(); ++p)
   {
-    const auto r = find(p);
+    const std::pair<std::size_t, char> r = classes.find(p);
     if(sheet_of_root[r.first] == none)
     {
       sheet_of_root[r.first] = sheets.closed.size();
@@ -237,6 +260,147 @@ inline Soup_sheets soup_sheets(const Advancing_front_soup& soup, const Soup_part
   return sheets;
 }
 
+// Open sheets that continue each other across a gap that the front did not
+// bridge (a strip the scan missed, a step whose riser it did not sample) are
+// oriented alike, as the parts of one sheet are. Each border vertex of an
+// open sheet looks for the nearest border vertex of another open sheet
+// among its `neighbours` nearest border vertices; it votes for the two
+// sheets to face alike (their normals there to agree) when that vertex is
+// within `gap` times its local spacing (the mean length of its edges), the
+// gap lies within 45 degrees of both vertices' tangent planes, and their
+// normals are within 45 degrees of parallel. Sheets are joined in order of
+// decreasing votes, from `fewest_votes` up, so that a few contradicting
+// pairs are outvoted. Two faces of a thin wall (offset along the normal) or
+// sheets that meet at an angle never vote: being near does not tell which
+// way they face. Closed sheets stay alone: they point out of the volume
+// they enclose.
+struct Sheet_groups
+{
+  std::vector<std::size_t> group_of_sheet;
+  std::vector<char> reverse_in_group;  // by sheet: against its group's first sheet
+  std::size_t number_of_groups = 0;
+
+  // every sheet a group of its own
+  static Sheet_groups one_per_sheet(std::size_t number_of_sheets)
+  {
+    Sheet_groups groups;
+    groups.group_of_sheet.resize(number_of_sheets);
+    std::iota(groups.group_of_sheet.begin(), groups.group_of_sheet.end(), std::size_t(0));
+    groups.reverse_in_group.assign(number_of_sheets, 0);
+    groups.number_of_groups = number_of_sheets;
+    return groups;
+  }
+};
+
+template <class Vector, class PointOf>
+Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, const Soup_parts& parts,
+                                          const Soup_sheets& sheets, const PointOf& point)
+{
+  typedef typename CGAL::Kernel_traits<Vector>::Kernel Kernel;
+  typedef typename Kernel::Point_3 Point;
+  typedef CGAL::Search_traits_adapter<std::size_t, typename CGAL::Pointer_property_map<Point>::type,
+                                      CGAL::Search_traits_3<Kernel> > Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+  typedef typename Search::Tree Tree;
+  const double gap = 8, cos_45 = 0.7071;
+  const unsigned int neighbours = 24;
+  const std::size_t fewest_votes = 3, none = Advancing_front_soup::no_neighbor;
+
+  // normals (as oriented in their sheet), local spacings and border vertices
+  const std::size_t nv = soup.shape_vertex.size();
+  std::vector<Vector> normal(nv, Vector(0, 0, 0));
+  std::vector<double> spacing(nv, 0.0);
+  std::vector<int> edges_at(nv, 0);
+  std::vector<std::size_t> sheet_of_vertex(nv, none);
+  std::vector<char> on_border(nv, 0);
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const std::array<std::size_t, 3>& tri = soup.triangles[t];
+    const std::size_t part = parts.part_of_triangle[t], sheet = sheets.sheet_of_part[part];
+    const Vector area_normal = CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0]));
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t s = tri[k];
+      normal[s] = normal[s] + (sheets.reverse_in_sheet[part] ? -area_normal : area_normal);
+      sheet_of_vertex[s] = sheet;
+      const double length = std::sqrt(CGAL::to_double((point(tri[(k + 1) % 3]) - point(s)).squared_length()));
+      spacing[s] += length;
+      spacing[tri[(k + 1) % 3]] += length;
+      ++edges_at[s];
+      ++edges_at[tri[(k + 1) % 3]];
+      if(soup.neighbors[t][k] == none && !sheets.closed[sheet])
+        on_border[tri[(k + 1) % 3]] = on_border[tri[(k + 2) % 3]] = 1;
+    }
+  }
+  std::vector<std::size_t> border;
+  std::vector<Point> position(nv);
+  for(std::size_t s = 0; s < nv; ++s)
+  {
+    position[s] = point(s);
+    if(on_border[s])
+      border.push_back(s);
+  }
+
+  // votes between two sheets: (sheets, reversed relative to each other) -> count
+  std::map<std::tuple<std::size_t, std::size_t, bool>, std::size_t> votes;
+  if(!border.empty())
+  {
+    const typename CGAL::Pointer_property_map<Point>::type position_map = CGAL::make_property_map(position);
+    Tree tree(border.begin(), border.end(), typename Tree::Splitter(), Traits(position_map));
+    const typename Search::Distance distance(position_map);
+    for(std::size_t u : border)
+    {
+      const Search search(tree, position[u], neighbours, 0, true, distance);
+      for(const auto& found : search)
+      {
+        const std::size_t w = found.first;
+        if(sheet_of_vertex[w] == sheet_of_vertex[u])
+          continue;
+        // the nearest border vertex of another sheet: near, in the tangent planes, parallel
+        const Vector offset = position[w] - position[u];
+        const double length = std::sqrt(CGAL::to_double(offset.squared_length()));
+        const double nu = std::sqrt(CGAL::to_double(normal[u].squared_length()));
+        const double nw = std::sqrt(CGAL::to_double(normal[w].squared_length()));
+        if(!(nu > 0 && nw > 0))
+          break;
+        const double cos_normals = CGAL::to_double(normal[u] * normal[w]) / (nu * nw);
+        if(length <= gap * spacing[u] / (std::max)(edges_at[u], 1)
+           && std::abs(CGAL::to_double(offset * normal[u])) <= cos_45 * length * nu
+           && std::abs(CGAL::to_double(offset * normal[w])) <= cos_45 * length * nw
+           && std::abs(cos_normals) >= cos_45)
+        {
+          const std::size_t a = (std::min)(sheet_of_vertex[u], sheet_of_vertex[w]);
+          const std::size_t b = (std::max)(sheet_of_vertex[u], sheet_of_vertex[w]);
+          ++votes[std::make_tuple(a, b, cos_normals < 0)];
+        }
+        break;
+      }
+    }
+  }
+  std::vector<std::pair<std::size_t, std::tuple<std::size_t, std::size_t, bool> > > links;
+  for(const auto& vote : votes)
+    if(vote.second >= fewest_votes)
+      links.emplace_back(vote.second, vote.first);
+  std::sort(links.begin(), links.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+  Parity_union_find classes(sheets.size());
+  for(const auto& link : links)
+    classes.join(std::get<0>(link.second), std::get<1>(link.second), std::get<2>(link.second));
+
+  Sheet_groups groups;
+  std::vector<std::size_t> group_of_root(sheets.size(), none);
+  groups.group_of_sheet.resize(sheets.size());
+  groups.reverse_in_group.resize(sheets.size());
+  for(std::size_t sheet = 0; sheet < sheets.size(); ++sheet)
+  {
+    const std::pair<std::size_t, char> r = classes.find(sheet);
+    if(group_of_root[r.first] == none)
+      group_of_root[r.first] = groups.number_of_groups++;
+    groups.group_of_sheet[sheet] = group_of_root[r.first];
+    groups.reverse_in_group[sheet] = r.second;
+  }
+  return groups;
+}
+
 // Which parts to reverse so that each faces the way the orientation rule of
 // the manual says ("Orientation"):
 // - with reference normals (a scanner's), each part (cut at the folds, see
@@ -246,15 +410,22 @@ inline Soup_sheets soup_sheets(const Advancing_front_soup& soup, const Soup_part
 //   vertices has positive volume: for a closed sheet that is the volume it
 //   encloses, wherever the centre, so it points outwards; an open sheet
 //   points away from the centre (outwards, for a single view of a convex
-//   object or a building's facades).
+//   object or a building's facades), together with the open sheets it
+//   continues across gaps (`groups`, see `join_open_sheets_across_gaps()`):
+//   the cones of a group are summed.
 // `point(s)` gives the position of soup vertex `s`, `reference(s)` its
 // reference normal.
 template <class Vector, class PointOf, class ReferenceOf>
 std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_parts& parts,
-                                   const Soup_sheets& sheets, const PointOf& point,
+                                   const Soup_sheets& sheets, const Sheet_groups& groups, const PointOf& point,
                                    const ReferenceOf& reference, bool has_reference)
 {
-  std::vector<double> vote(has_reference ? parts.size() : sheets.size(), 0.0);
+  // against the first sheet of its group, when oriented by the cones
+  auto reversed_in_group = [&](std::size_t part) {
+    return char(sheets.reverse_in_sheet[part] ^ groups.reverse_in_group[sheets.sheet_of_part[part]]);
+  };
+  auto group_of_part = [&](std::size_t part) { return groups.group_of_sheet[sheets.sheet_of_part[part]]; };
+  std::vector<double> vote(has_reference ? parts.size() : groups.number_of_groups, 0.0);
   // the centre of the soup's vertices: the apex of the cones
   Vector centre(0, 0, 0);
   for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
@@ -279,13 +450,13 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
       }
     }
     else
-      vote[sheets.sheet_of_part[part]] += (sheets.reverse_in_sheet[part] ? -1.0 : 1.0)
-                                          * CGAL::to_double(area_normal * p0);  // six times the signed cone volume
+      vote[group_of_part(part)] += (reversed_in_group(part) ? -1.0 : 1.0)
+                                   * CGAL::to_double(area_normal * p0);  // six times the signed cone volume
   }
   std::vector<char> reverse(parts.size(), 0);
   for(std::size_t p = 0; p < parts.size(); ++p)
     reverse[p] = has_reference ? char(vote[p] < 0 ? 1 : 0)
-                               : char((vote[sheets.sheet_of_part[p]] < 0 ? 1 : 0) ^ sheets.reverse_in_sheet[p]);
+                               : char((vote[group_of_part(p)] < 0 ? 1 : 0) ^ reversed_in_group(p));
   return reverse;
 }
 
