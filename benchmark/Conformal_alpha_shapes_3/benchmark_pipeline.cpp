@@ -1,6 +1,6 @@
 // The default job of the program conformal_curvature, stage by stage, against
 // the Delaunay build of the same points and CGAL jet fitting with 120
-// neighbours: wall and processor time, and peak resident memory from the
+// neighbors: wall and processor time, and peak resident memory from the
 // operating system (issue 12).
 //
 //   benchmark_pipeline [--sizes 100000,300000,1000000] [--surfaces noisy,clean]
@@ -16,7 +16,7 @@
 // peak memory is its own:
 //   delaunay   CGAL::Delaunay_triangulation_3<Epick> of the input points
 //   jet        CGAL::Monge_via_jet_fitting (jet degree 2, Monge degree 2) per
-//              point on its 120 nearest neighbours from a kd-tree
+//              point on its 120 nearest neighbors from a kd-tree
 //              (Orthogonal_k_neighbor_search), serial; inputs above --jet-max
 //              points (default 3000000) are skipped
 //   parts      the parts of the Multiscale_curvatures construction, called
@@ -32,7 +32,7 @@
 //              the surface PLY with the layers, and the binary PLY point
 //              cloud, through the program's writer (cas3_curvature_output.h;
 //              reading an input file is not timed). The curvature of all
-//              neighbourhoods is one stage: one search per vertex serves them all.
+//              neighborhoods is one stage: one search per vertex serves them all.
 //   program    (--program PATH) the conformal_curvature binary on the
 //              points written as .xyz, timed from outside (wall; processor
 //              time and peak memory from wait4); it also reads the text file.
@@ -345,21 +345,21 @@ void measure_delaunay(Child_meter& m, const Input& in)
 
 void measure_jet(Child_meter& m, const Input& in)
 {
-  m.stage("jet fitting, 120 neighbours", "reference", [&] {
+  m.stage("jet fitting, 120 neighbors", "reference", [&] {
     typedef CGAL::Search_traits_3<K> Traits;
     typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
     typedef CGAL::Monge_via_jet_fitting<K> Fitting;
     const Search::Tree tree(in.points.begin(), in.points.end());
-    std::vector<Point> neighbours;
-    neighbours.reserve(120);
+    std::vector<Point> neighbors;
+    neighbors.reserve(120);
     double sum = 0;
     for(const Point& p : in.points)
     {
-      neighbours.clear();
+      neighbors.clear();
       const Search search(tree, p, 120);
-      for(auto it = search.begin(); it != search.end(); ++it) neighbours.push_back(it->first);
+      for(auto it = search.begin(); it != search.end(); ++it) neighbors.push_back(it->first);
       Fitting fitting;
-      const Fitting::Monge_form form = fitting(neighbours.begin(), neighbours.end(), 2, 2);
+      const Fitting::Monge_form form = fitting(neighbors.begin(), neighbors.end(), 2, 2);
       sum += form.principal_curvatures(0) + form.principal_curvatures(1);
     }
     return "Monge_via_jet_fitting(2, 2) per point, kd-tree k-NN; checksum " + number(sum);
@@ -385,7 +385,7 @@ void measure_parts(Child_meter& m, const Input& in)
       plan.passes = (std::max)(plan.passes, 1);
       plan.neighbors = (std::max)(plan.neighbors, 24u);
       CAS3::denoise(points, plan);
-      return std::to_string(plan.passes) + " pass(es) over " + std::to_string(plan.neighbors) + " neighbours";
+      return std::to_string(plan.passes) + " pass(es) over " + std::to_string(plan.neighbors) + " neighbors";
     });
   else
     m.send("denoise", "part", 0, 0, 0, 0, "not called for");
@@ -436,7 +436,7 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
     return std::string();
   });
   std::vector<std::vector<CAS3::Point_curvature<K> > > curvatures;
-  m.stage("estimate_curvatures (" + std::to_string(neighborhoods.size()) + " neighbourhoods)", "stage", [&] {
+  m.stage("estimate_curvatures (" + std::to_string(neighborhoods.size()) + " neighborhoods)", "stage", [&] {
     curvatures = analysis->estimate_curvatures(surface, neighborhoods, CAS3::QUADRIC_FIT);
     return std::string();
   });
@@ -452,10 +452,10 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
       return cas3::summary_row(neighborhood.label(), a, curvatures[r]);
     });
   }
-  m.stage("write surface PLY (binary, 5 layers, colours)", "stage", [&] {
-    auto colour = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
-    cas3::colour_by_curvature(written,
-      written.property_map<Analysis::Surface_vertex, float>("v:H_" + layers.front().label).first, colour);
+  m.stage("write surface PLY (binary, 5 layers, colors)", "stage", [&] {
+    auto color = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
+    cas3::color_by_curvature(written,
+      written.property_map<Analysis::Surface_vertex, float>("v:H_" + layers.front().label).first, color);
     std::ofstream ply(dir / "surface_auto.ply", std::ios::binary);
     CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
     if(!CGAL::IO::write_PLY(ply, written) || !ply) throw std::runtime_error("cannot write the surface PLY");

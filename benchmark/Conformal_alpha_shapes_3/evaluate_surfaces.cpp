@@ -1,13 +1,14 @@
 // evaluate_surfaces: accuracy of the end-to-end pipeline (points -> surface
 // -> normal, H, K per input point) against exact truth, with the metrics of
-// METHOD.md section 7, and CGAL's Monge_via_jet_fitting as the peer.
+// the manual ("Measured: Advancing Front against the Solid Boundary"), and
+// CGAL's Monge_via_jet_fitting as the peer.
 //
 //   evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large]
 //                     [--noise 0,0.1,0.3] [--neighborhoods LIST] [--rings 1,2,3]
 //                     [--normals] [--scale-factor 1] [--jet-samples 5000] [--no-jet]
 //                     [--data DIR] [--csv FILE] [--write-points DIR] [--list] [--check-truth] [--help]
 //
-// Neighbourhoods of the curvature fit (--neighborhoods, default
+// Neighborhoods of the curvature fit (--neighborhoods, default
 // auto,k1,k2,k3,2s,4s,8s,16s): k2 a ring size, auto the automatic radius
 // per point, 4s a radius in measured sample spacings, 0.01 a radius in model
 // units; --rings 1,2,3 is short for k1,k2,k3. --scale-factor F extracts the
@@ -39,16 +40,16 @@
 // normals, the plain share, whether the pipeline uses them or not),
 // median and 90th percentile of |H_est - H_true| over covered points
 // divided by the median |H_true| over all points (likewise K), at the best
-// fixed neighbourhood (smallest median H error, chosen with the truth) and,
+// fixed neighborhood (smallest median H error, chosen with the truth) and,
 // in their own columns, at the automatic one (chosen per point from the data
 // alone), with the median radius it chose in spacings; the median H error
-// of every neighbourhood; surface components when the pipeline reports
+// of every neighborhood; surface components when the pipeline reports
 // them; the peer's best k and its errors (on --jet-samples points spread
 // over the sample; k in {60,120,240,480} on noisy data, {12,24} on clean
-// data, {400,1000} for dent_bumps~smooth, whose truth summarises many
+// data, {400,1000} for dent_bumps~smooth, whose truth summarizes many
 // points; normal sign from the truth). For the plane the H columns hold
 // median (p90) |H| * spacing, marked '*'. Scans: best is the best oriented
-// neighbourhood, and the per-neighbourhood column holds orientation; a scan
+// neighborhood, and the per-neighborhood column holds orientation; a scan
 // given as x y z only notes the best orientation that one side per
 // connected piece of the surface could reach (what no rule that orients
 // whole sheets can exceed).
@@ -121,7 +122,7 @@ CAS3::Neighborhood neighborhood_of(const std::string& item)
 }
 
 // The automatic scale (times `scale_factor`), curvature with each
-// neighbourhood: what multiscale_curvatures(points,
+// neighborhood: what multiscale_curvatures(points,
 // scales({Scale::automatic()}).neighborhoods(...)) computes, through
 // Multiscale_curvatures to count the surface's parts.
 // Values count only at input points that are vertices of the surface.
@@ -255,7 +256,7 @@ Accuracy accuracy(const std::vector<Vector>& normal, const std::vector<double>& 
 }
 
 // ---------------------------------------------------------------------------
-// The peer: degree 2 jet, degree 2 Monge form, on the k nearest neighbours.
+// The peer: degree 2 jet, degree 2 Monge form, on the k nearest neighbors.
 
 struct Jet_accuracy
 {
@@ -277,17 +278,17 @@ std::vector<Jet_accuracy> jet_accuracy(const Sample& s, const Sample& truth, con
   const int k_max = *std::max_element(ks.begin(), ks.end());
   std::vector<std::vector<Vector> > normal(ks.size());
   std::vector<std::vector<double> > H(ks.size()), K(ks.size());
-  std::vector<Point> neighbours;
+  std::vector<Point> neighbors;
   for(std::size_t i : index)
   {
-    neighbours.clear();
+    neighbors.clear();
     const Search search(tree, s.points[i], unsigned(k_max));
-    for(auto it = search.begin(); it != search.end(); ++it) neighbours.push_back(it->first);
+    for(auto it = search.begin(); it != search.end(); ++it) neighbors.push_back(it->first);
     for(std::size_t j = 0; j < ks.size(); ++j)
     {
-      const std::size_t k = std::min<std::size_t>(std::size_t(ks[j]), neighbours.size());
+      const std::size_t k = std::min<std::size_t>(std::size_t(ks[j]), neighbors.size());
       Fitting fitting;
-      Fitting::Monge_form form = fitting(neighbours.begin(), neighbours.begin() + std::ptrdiff_t(k), 2, 2);
+      Fitting::Monge_form form = fitting(neighbors.begin(), neighbors.begin() + std::ptrdiff_t(k), 2, 2);
       form.comply_wrt_given_normal(truth.normals[i]);
       // Monge form z = (k1 x^2 + k2 y^2) / 2 along the normal: convex with
       // outward normal has k1, k2 < 0 there, > 0 in this package's convention
@@ -314,16 +315,16 @@ struct Row
   double coverage = nan_value, orientation = nan_value;
   int components = -1;
   std::string neighborhoods;
-  std::string best;  // the fixed neighbourhood of smallest median H error
+  std::string best;  // the fixed neighborhood of smallest median H error
   bool planar = false;
   double H_med = nan_value, H_p90 = nan_value, K_med = nan_value, K_p90 = nan_value;
-  // the automatic neighbourhood, and the median radius it chose in spacings
+  // the automatic neighborhood, and the median radius it chose in spacings
   double auto_H_med = nan_value, auto_H_p90 = nan_value, auto_K_med = nan_value, auto_K_p90 = nan_value;
   double auto_radius = nan_value;
   int jet_k = 0;
   double jet_H_med = nan_value, jet_H_p90 = nan_value, jet_K_med = nan_value;
   double seconds = nan_value;
-  std::string layers;  // median H error of every neighbourhood: "k1:3.2 auto:1.1"
+  std::string layers;  // median H error of every neighborhood: "k1:3.2 auto:1.1"
   std::string note;
 };
 
@@ -362,7 +363,7 @@ void print_header()
 {
   std::printf("%-18s %6s %5s %5s %5s %3s | %5s %6s %6s %6s %6s | %6s %6s %6s %6s %5s | %5s %6s %6s %6s | %6s %s\n",
               "case", "n", "noise", "cov%", "ori%", "cmp", "best", "H med", "H p90", "K med", "K p90", "autoHm",
-              "autoHp", "autoKm", "autoKp", "r/s", "jet k", "jetHm", "jetHp", "jetKm", "cpu s", "H med per neighbourhood");
+              "autoHp", "autoKm", "autoKp", "r/s", "jet k", "jetHm", "jetHp", "jetKm", "cpu s", "H med per neighborhood");
 }
 
 void print_row(const Row& r)
@@ -723,7 +724,7 @@ void evaluate_scan(const std::string& name, const std::string& file, const Optio
     judge.flip_allowed = !given;
     std::vector<std::size_t> all(points.size());
     for(std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-    // reference normals only: the best neighbourhood is the best oriented one
+    // reference normals only: the best neighborhood is the best oriented one
     const Layer* best_layer = nullptr;
     for(const Layer& layer : layers)
     {
@@ -818,7 +819,7 @@ int main(int argc, char* argv[])
                      "                  [--neighborhoods auto,k1,k2,k3,2s,4s,8s,16s] [--rings 1,2,3] [--normals]\n"
                      "                  [--scale-factor 1] [--jet-samples 5000] [--no-jet] [--data DIR] [--csv FILE]\n"
                      "                  [--write-points DIR] [--list] [--check-truth]\n"
-                     "neighbourhoods: k2 ring size, auto, 4s spacings, 0.01 model units (see evaluate_surfaces.cpp)\n";
+                     "neighborhoods: k2 ring size, auto, 4s spacings, 0.01 model units (see evaluate_surfaces.cpp)\n";
         return EXIT_SUCCESS;
       }
       else if(arg == "--list")
@@ -832,7 +833,7 @@ int main(int argc, char* argv[])
         throw std::invalid_argument("unknown option " + arg);
     }
     if(o.neighborhoods.empty())
-      throw std::invalid_argument("no neighbourhood");
+      throw std::invalid_argument("no neighborhood");
     for(const std::string& item : o.neighborhoods) neighborhood_of(item);  // throws on a bad item
   }
   catch(const std::exception& e)
@@ -858,10 +859,10 @@ int main(int argc, char* argv[])
   }
 
   std::printf("errors in %% of the median |true value|; '*': median |H| * spacing (plane); orientation up to one\n"
-              "global flip for open surfaces and scans without given normals; best: the fixed neighbourhood of\n"
+              "global flip for open surfaces and scans without given normals; best: the fixed neighborhood of\n"
               "smallest median H error; auto: the automatic one, r/s its median radius in spacings; jet: CGAL\n"
               "Monge_via_jet_fitting (degree 2/2) on %s points, k from {60,120,240,480} (noisy), {12,24} (clean),\n"
-              "{400,1000} (dent_bumps~smooth); neighbourhoods %s\n",
+              "{400,1000} (dent_bumps~smooth); neighborhoods %s\n",
               o.jet_samples ? std::to_string(o.jet_samples).c_str() : "all", join(o.neighborhoods).c_str());
   print_header();
   std::vector<Row> rows;

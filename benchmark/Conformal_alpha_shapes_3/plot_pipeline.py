@@ -11,10 +11,10 @@ import csv
 import math
 import sys
 
-STAGES = [  # (label, how to find its rows, colour)
+STAGES = [  # (label, how to find its rows, color)
     ("Delaunay build", lambda r: r["process"] == "delaunay", "#000000"),
     ("construction", lambda r: r["stage"].startswith("Multiscale_curvatures construction"), "#1f77b4"),
-    ("automatic scale", lambda r: r["stage"].startswith("alpha(Scale::automatic"), "#ff7f0e"),
+    ("automatic scale", lambda r: r["stage"].startswith("scale_value(Scale::automatic"), "#ff7f0e"),
     ("extraction", lambda r: r["stage"] == "extract_surface", "#2ca02c"),
     ("curvature", lambda r: r["stage"].startswith("estimate_curvatures"), "#d62728"),
     ("whole job", lambda r: r["group"] == "total", "#9467bd"),
@@ -76,17 +76,17 @@ def main(csv_path, svg_path):
         parts.append('<text x="%.1f" y="%.1f" text-anchor="middle">points</text>' % ((x(x_lo) + x(x_hi)) / 2, y(y_lo) + 28))
         parts.append('<text x="%.1f" y="%.1f" transform="rotate(-90 %.1f %.1f)" text-anchor="middle">'
                      'processor time per point (us)</text>' % (ox + 14, (y(y_lo) + y(y_hi)) / 2, ox + 14, (y(y_lo) + y(y_hi)) / 2))
-        for label, _, colour in STAGES:
+        for label, _, color in STAGES:
             pts = [(n, v) for n, v in series(rows, surface)[label] if v > 0]
             if not pts:
                 continue
             parts.append('<polyline fill="none" stroke="%s" stroke-width="2" points="%s"/>'
-                         % (colour, " ".join("%.1f,%.1f" % (x(n), y(v)) for n, v in pts)))
+                         % (color, " ".join("%.1f,%.1f" % (x(n), y(v)) for n, v in pts)))
             for n, v in pts:
-                parts.append('<circle cx="%.1f" cy="%.1f" r="2.5" fill="%s"/>' % (x(n), y(v), colour))
-    for i, (label, _, colour) in enumerate(STAGES):
+                parts.append('<circle cx="%.1f" cy="%.1f" r="2.5" fill="%s"/>' % (x(n), y(v), color))
+    for i, (label, _, color) in enumerate(STAGES):
         lx, ly = margin + (i % 4) * 190, height + 50 + (i // 4) * 18
-        parts.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="%s" stroke-width="2"/>' % (lx, ly - 4, lx + 20, ly - 4, colour))
+        parts.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="%s" stroke-width="2"/>' % (lx, ly - 4, lx + 20, ly - 4, color))
         parts.append('<text x="%d" y="%d">%s</text>' % (lx + 26, ly, label))
     parts.append("</svg>")
     with open(svg_path, "w") as f:

@@ -1,7 +1,7 @@
 // conformal_curvature: multi-scale curvature of a point cloud, end to end.
 // Run with --help for the usage. Writes, into the output directory, a binary
 // PLY point cloud with every input point's values at every scale and
-// neighbourhood, one binary PLY surface per scale with the same values per
+// neighborhood, one binary PLY surface per scale with the same values per
 // vertex, and on request a CSV with a row per input point per layer; prints
 // a summary table on stdout.
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
@@ -55,7 +55,7 @@ const char* const usage =
   "  --alpha LIST     comma list of conformal scales a: values > 0 (0.5),\n"
   "                   quantiles of the facet values in (0%, 100%] (25%; the\n"
   "                   paper's figures use 10%,25%,35%,50%) and/or auto; default auto\n"
-  "  --radius LIST    comma list of neighbourhood radii of the curvature fit:\n"
+  "  --radius LIST    comma list of neighborhood radii of the curvature fit:\n"
   "                   model units (0.01), multiples of the measured sample\n"
   "                   spacing (4s) and/or auto (chosen per point from the data);\n"
   "                   default auto,2s,4s,8s,16s unless --rings is given\n"
@@ -64,7 +64,7 @@ const char* const usage =
   "  --estimator NAME quadric (default), euler-least-squares or paper\n"
   "  --denoise MODE   auto (default: smooth when the estimated noise exceeds\n"
   "                   0.02 x spacing), on or off\n"
-  "  --denoise-neighbors K  neighbours of the smoothing jet fit; default: from\n"
+  "  --denoise-neighbors K  neighbors of the smoothing jet fit; default: from\n"
   "                   the estimated noise (24 to 64)\n"
   "  --extraction NAME front (default: one sheet per part, open or closed)\n"
   "                   or solid (the boundary of the enclosed solid)\n"
@@ -72,11 +72,11 @@ const char* const usage =
   "  --csv            also write DIR/curvatures.csv, a row per point per layer\n"
   "  --quiet          no progress and no summary\n"
   "Writes DIR/curvatures.ply (binary point cloud: per point x y z, outlier,\n"
-  "and per layer L = [scale_]neighbourhood, e.g. r4s or 25pct_k2: nx_L ny_L\n"
+  "and per layer L = [scale_]neighborhood, e.g. r4s or 25pct_k2: nx_L ny_L\n"
   "nz_L H_L K_L k1_L k2_L d1x_L .. d2z_L radius_L distance_L source_L, where\n"
   "source 0 = the point's own surface vertex, 1 = the nearest surface point,\n"
   "2 = no value) and DIR/surface_<scale>.ply per scale.\n"
-  "The points are recentred and rescaled before the work (results are in the\n"
+  "The points are recenterd and rescaled before the work (results are in the\n"
   "input's units); isolated far outliers are left out and get outlier = 1.\n"
   "A failed run exits with status 1 and one line on stderr, and leaves DIR\n"
   "as it was.\n";
@@ -186,7 +186,7 @@ Options parse(int argc, char* argv[])
       unsigned int k = 0;
       const auto r = std::from_chars(item.data(), item.data() + item.size(), k);
       if(r.ec != std::errc() || r.ptr != item.data() + item.size() || k < 7)
-        throw Failure("--denoise-neighbors: not a neighbour count >= 7: '" + item + "'");
+        throw Failure("--denoise-neighbors: not a neighbor count >= 7: '" + item + "'");
       o.denoising_neighbors = k;
     }
     else if(arg == "--extraction")
@@ -422,7 +422,7 @@ int run(const Options& o)
   const cas3::Point_cloud cloud = cas3::read_point_cloud(o.input);
   const std::vector<Point>& points = cloud.points;
   progress("read " + std::to_string(points.size()) + " points");
-  // the library recentres, rescales and leaves isolated far outliers out
+  // the library recenters, rescales and leaves isolated far outliers out
   // (see the manual, section "Input Rules")
   std::unique_ptr<Analysis> analysis;
   try
@@ -457,7 +457,7 @@ int run(const Options& o)
                 analysis->noise().noise_24 > 1.3 * analysis->noise().noise ? ", mostly unresolved detail" : "");
   const std::string smoothing_text = smoothing.passes == 0 ? std::string("no smoothing\n")
     : "smoothed by " + std::to_string(smoothing.passes) + " jet pass(es) over "
-        + std::to_string(smoothing.neighbors) + " neighbours before building the shape\n";
+        + std::to_string(smoothing.neighbors) + " neighbors before building the shape\n";
   summary << o.input << ": " << points.size() << " points";
   if(!outliers.empty())
     summary << ", " << outliers.size() << " isolated far outliers left out (outlier column)";
@@ -466,7 +466,7 @@ int run(const Options& o)
           << "; orientation: "
           << (analysis->has_reference_normals()
                 ? "the majority of the input normals, per sheet; values per point"
-                : "closed sheets outward, open sheets away from the centre, with those they continue across gaps")
+                : "closed sheets outward, open sheets away from the center, with those they continue across gaps")
           << "\n"
           << "layer               a  own vertex  nearest  no value  radius(median)"
              "    H:  5%          50%          95%      K:  5%          50%          95%\n";
@@ -529,11 +529,11 @@ int run(const Options& o)
                     scale.label().c_str(), compared == 0 ? 0.0 : 100.0 * double(agree) / double(compared));
       summary << line;
     }
-    // colours: the ramp of the first layer's mean curvature
-    auto colour = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
-    cas3::colour_by_curvature(written,
+    // colors: the ramp of the first layer's mean curvature
+    auto color = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
+    cas3::color_by_curvature(written,
       written.property_map<Analysis::Surface_vertex, float>("v:H_" + layers[layers.size() - o.neighborhoods.size()].label).first,
-      colour);
+      color);
     std::ofstream ply = output.open("surface_" + file_label(scale) + ".ply", true);
     CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
     if(!CGAL::IO::write_PLY(ply, written) || !ply)

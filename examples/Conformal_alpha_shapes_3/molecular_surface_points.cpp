@@ -205,9 +205,9 @@ void print_stats(const cas3::Surface_sample& s, const std::vector<cas3::Atom>& a
     angle.push_back(worst);
     nearest.push_back(closest);
   }
-  std::printf("spacing: nearest neighbour %.3f (5%%) %.3f (median) %.3f (95%%) %.3f (max)\n", quantile(nearest, 0.05),
+  std::printf("spacing: nearest neighbor %.3f (5%%) %.3f (median) %.3f (95%%) %.3f (max)\n", quantile(nearest, 0.05),
               quantile(nearest, 0.5), quantile(nearest, 0.95), quantile(nearest, 1.0));
-  std::printf("smoothness: largest angle between a point's normal and its 6 neighbours' %.1f (median) %.1f (95%%)"
+  std::printf("smoothness: largest angle between a point's normal and its 6 neighbors' %.1f (median) %.1f (95%%)"
               " %.1f (99%%) degrees\n",
               quantile(angle, 0.5), quantile(angle, 0.95), quantile(angle, 0.99));
   const cas3::Surface_sample sas = cas3::sample_atom_spheres(atoms, probe, 0.15);
@@ -241,7 +241,7 @@ std::vector<std::string> check(const cas3::Surface_sample& s, const std::vector<
   Tree tree(s.points.begin(), s.points.end());
   for(std::size_t i = 0; i < n; ++i)
   {
-    // the two nearest: the point itself, then its nearest neighbour (or a
+    // the two nearest: the point itself, then its nearest neighbor (or a
     // duplicate at distance 0)
     Neighbor_search search(tree, s.points[i], 2);
     int at_zero = 0;
@@ -262,15 +262,15 @@ std::vector<std::string> check(const cas3::Surface_sample& s, const std::vector<
     const Point& p = s.points[i];
     const cas3::Atom& own = atoms[s.atom[i]];
     const double R = own.radius + probe;
-    const double d = std::sqrt(CGAL::squared_distance(p, own.centre));
+    const double d = std::sqrt(CGAL::squared_distance(p, own.center));
     if(std::abs(std::sqrt(s.normals[i].squared_length()) - 1) > 1e-9)
       fail("the normal of point " + std::to_string(i) + " is not a unit vector");
-    const Vector radial = (p - own.centre) / d;
+    const Vector radial = (p - own.center) / d;
     // on its atom's sphere (the skin's vertices are placed by bisection)
     const bool patch = std::abs(d - R) <= (o.method == "skin" ? 1e-4 : 1e-9 * R);
     on_sphere += patch ? 1 : 0;
     if(o.method != "skin" && !patch)
-      fail("point " + std::to_string(i) + " is " + std::to_string(d) + " from the centre of its atom (line "
+      fail("point " + std::to_string(i) + " is " + std::to_string(d) + " from the center of its atom (line "
            + std::to_string(own.line) + "), not on its sphere of radius " + std::to_string(R));
     // on a sphere patch the outward normal is radial
     if(patch && s.normals[i] * radial < (o.method == "skin" ? 0.999 : 1 - 1e-9))
@@ -280,7 +280,7 @@ std::vector<std::string> check(const cas3::Surface_sample& s, const std::vector<
     for(std::size_t j = 0; j < atoms.size(); ++j)
     {
       const double Rj = atoms[j].radius + probe;
-      const double dj = std::sqrt(CGAL::squared_distance(p, atoms[j].centre)) - Rj;
+      const double dj = std::sqrt(CGAL::squared_distance(p, atoms[j].center)) - Rj;
       gap = std::min(gap, dj);
       // the skin's vertices are placed by bisection: a tolerance of 1e-3
       if(dj < (o.method == "skin" ? -1e-3 : -1e-9 * Rj))

@@ -1,4 +1,4 @@
-// Multi-scale curvature of a point cloud: for each scale and neighbourhood,
+// Multi-scale curvature of a point cloud: for each scale and neighborhood,
 // where the points' values come from and the median mean curvature.
 //   multiscale_curvatures_example [points.xyz]   (default: the bundled bunny)
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
@@ -25,7 +25,7 @@ int main(int argc, char* argv[])
     std::cerr << "cannot read points from " << filename << "\n";
     return EXIT_FAILURE;
   }
-  // the automatic scale and the default neighbourhoods (automatic, then 2 to
+  // the automatic scale and the default neighborhoods (automatic, then 2 to
   // 16 sample spacings), and the paper's 25% quantile with 2-rings
   std::vector<CAS3::Curvature_layer<K> > layers = CAS3::multiscale_curvatures(points);
   const std::vector<CAS3::Curvature_layer<K> > paper = CAS3::multiscale_curvatures(
@@ -33,7 +33,7 @@ int main(int argc, char* argv[])
             CAS3::parameters::neighborhoods(std::vector<CAS3::Neighborhood>{CAS3::Neighborhood::rings(2)})));
   layers.insert(layers.end(), paper.begin(), paper.end());
 
-  std::printf("scale  neighbourhood  a           own vertex  nearest facet  no value  median H\n");
+  std::printf("scale  neighborhood  a           own vertex  nearest facet  no value  median H\n");
   for(const CAS3::Curvature_layer<K>& layer : layers)
   {
     std::vector<double> H;

@@ -1,5 +1,5 @@
 // Renders a PLY surface written by conformal_curvature (its per-vertex
-// colours, or the colour ramp of a per-vertex property such as H_r4s) into a
+// colors, or the color ramp of a per-vertex property such as H_r4s) into a
 // PNG image, headless: a small software rasteriser with a z-buffer, Lambert
 // shading and 3x3 supersampling.
 //   render_surface_png SURFACE.ply IMAGE.png [--size N] [--view X,Y,Z] [--up X,Y,Z]
@@ -105,7 +105,7 @@ Image render(const Mesh& mesh, int size, const Vector& view, const Vector& up)
   u = u / std::sqrt(u.squared_length());
   const Vector v = CGAL::cross_product(w, u);
 
-  auto colour = mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+  auto color = mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for(auto vd : mesh.vertices())
   {
@@ -136,7 +136,7 @@ Image render(const Mesh& mesh, int size, const Vector& view, const Vector& up)
     for(auto vd : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
     {
       p[k] = mesh.point(vd);
-      const CGAL::IO::Color col = colour.second ? colour.first[vd] : CGAL::IO::Color(200, 200, 200);
+      const CGAL::IO::Color col = color.second ? color.first[vd] : CGAL::IO::Color(200, 200, 200);
       c[k] = {{col.red() / 255.0, col.green() / 255.0, col.blue() / 255.0}};
       ++k;
     }
@@ -204,32 +204,32 @@ int main(int argc, char* argv[])
   {
     int size = 480;
     Vector view(0, 0, 1), up(0, 1, 0);  // the Stanford bunny's front
-    std::string colour_by;
+    std::string color_by;
     for(int i = 3; i + 1 < argc; i += 2)
     {
       const std::string option = argv[i];
       if(option == "--size") size = std::stoi(argv[i + 1]);
       else if(option == "--view") view = parse_vector(argv[i + 1]);
       else if(option == "--up") up = parse_vector(argv[i + 1]);
-      else if(option == "--color-by") colour_by = argv[i + 1];
+      else if(option == "--color-by") color_by = argv[i + 1];
       else throw std::invalid_argument("unknown option " + option);
     }
     Mesh mesh;
     std::ifstream in(argv[1], std::ios::binary);
     if(!in || !CGAL::IO::read_PLY(in, mesh) || mesh.number_of_faces() == 0)
       throw std::invalid_argument(std::string("cannot read a surface from ") + argv[1]);
-    if(!colour_by.empty())
+    if(!color_by.empty())
     {
       // PLY floats and doubles read back as float or double properties
-      auto colour = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-      auto as_float = mesh.property_map<Mesh::Vertex_index, float>("v:" + colour_by);
-      auto as_double = mesh.property_map<Mesh::Vertex_index, double>("v:" + colour_by);
+      auto color = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+      auto as_float = mesh.property_map<Mesh::Vertex_index, float>("v:" + color_by);
+      auto as_double = mesh.property_map<Mesh::Vertex_index, double>("v:" + color_by);
       if(as_float.second)
-        cas3::colour_by_curvature(mesh, as_float.first, colour);
+        cas3::color_by_curvature(mesh, as_float.first, color);
       else if(as_double.second)
-        cas3::colour_by_curvature(mesh, as_double.first, colour);
+        cas3::color_by_curvature(mesh, as_double.first, color);
       else
-        throw std::invalid_argument(std::string(argv[1]) + " has no vertex property " + colour_by);
+        throw std::invalid_argument(std::string(argv[1]) + " has no vertex property " + color_by);
     }
     if(!write_png(argv[2], render(mesh, size, view, up)))
       throw std::invalid_argument(std::string("cannot write ") + argv[2]);

@@ -1,5 +1,5 @@
 // Bad and extreme input through the library: Conformal_alpha_shape_3's
-// range checks, the input hygiene stage (normalisation, isolated outliers),
+// range checks, the input hygiene stage (normalization, isolated outliers),
 // degenerate point sets through the whole pipeline and through denoise()
 // (with, for reference, its agreement with CGAL's jet_smooth_point_set() on
 // a regular noisy sample), and degenerate meshes for
@@ -182,7 +182,7 @@ BOOST_AUTO_TEST_CASE(coordinates_out_of_range_are_rejected_with_a_reason)
 
 BOOST_AUTO_TEST_CASE(overflowing_constructions_are_rejected_not_crashed)
 {
-  // inside the accepted box, but a tetrahedron's circumcentre far beyond:
+  // inside the accepted box, but a tetrahedron's circumcenter far beyond:
   // a sphere of radius 1e-60 beside points 1e70 away
   std::vector<Point> p = scaled(sphere(300), 1e-60);
   for(double s : {1e70, -1e70})
@@ -250,7 +250,7 @@ BOOST_AUTO_TEST_CASE(one_far_outlier_is_flagged_and_changes_nothing_else)
     BOOST_TEST_INFO("outlier at " << far);
     BOOST_REQUIRE(n.outliers == std::vector<std::size_t>{700});
     BOOST_TEST(n.is_outlier[700]);
-    BOOST_TEST(n.centre == reference.centre);
+    BOOST_TEST(n.center == reference.center);
     BOOST_TEST(n.size_exponent == reference.size_exponent);
     BOOST_REQUIRE(n.points.size() == clean.size());
     for(std::size_t i = 0; i < clean.size(); ++i)
@@ -291,11 +291,11 @@ BOOST_AUTO_TEST_CASE(one_far_outlier_gives_the_clean_answer_through_the_pipeline
   }
 }
 
-BOOST_AUTO_TEST_CASE(extreme_scales_and_offsets_normalise_to_the_unit_answer)
+BOOST_AUTO_TEST_CASE(extreme_scales_and_offsets_normalize_to_the_unit_answer)
 {
   const std::vector<Point> clean = sphere();
   const Normalized unit = CAS3::internal::normalize_input<K>(clean);
-  // powers of two: the normalised points are the same bits
+  // powers of two: the normalized points are the same bits
   for(int e : {996, -997, 20})
   {
     const Normalized n = CAS3::internal::normalize_input<K>(scaled(clean, std::ldexp(1.0, e)));
@@ -377,14 +377,14 @@ BOOST_AUTO_TEST_CASE(two_far_apart_clusters_are_both_kept)
   BOOST_TEST(n.points.size() == 2000u);
 }
 
-BOOST_AUTO_TEST_CASE(duplicates_degenerate_sets_and_tiny_inputs_are_normalised_without_removal)
+BOOST_AUTO_TEST_CASE(duplicates_degenerate_sets_and_tiny_inputs_are_normalized_without_removal)
 {
   // every point four times
   std::vector<Point> p;
   for(const Point& x : sphere(500))
     p.insert(p.end(), 4, x);
   BOOST_TEST(CAS3::internal::normalize_input<K>(p).outliers.empty());
-  // all equal: size 1, centre the point
+  // all equal: size 1, center the point
   const Normalized equal = CAS3::internal::normalize_input<K>(std::vector<Point>(20, Point(1e7, -3, 2)));
   BOOST_TEST(equal.outliers.empty());
   BOOST_TEST(equal.size() == 1.0);
@@ -439,11 +439,11 @@ BOOST_AUTO_TEST_CASE(denoise_matches_cgal_jet_smoothing)
 #endif
 }
 
-// Neighbourhoods whose quadratic is not determined leave their points in
+// Neighborhoods whose quadratic is not determined leave their points in
 // place (never NaN): coincident points (smoothed once, as one: the fuzz
 // finding denoise_jet_fit_on_duplicates), points on a line, points on one
 // circle, an exact plane (the fit is exact: nothing moves).
-BOOST_AUTO_TEST_CASE(denoise_leaves_degenerate_neighbourhoods_in_place)
+BOOST_AUTO_TEST_CASE(denoise_leaves_degenerate_neighborhoods_in_place)
 {
   const CAS3::Denoising_plan plan{24, 2};
   auto finite = [](const std::vector<Point>& p) {
@@ -457,7 +457,7 @@ BOOST_AUTO_TEST_CASE(denoise_leaves_degenerate_neighbourhoods_in_place)
     for(int j = 0; j < 4; ++j)
       copies.push_back(Point(i, j, (i + j) % 2));
   std::vector<Point> smoothed = copies;
-  CAS3::denoise(smoothed, plan);  // 17 distinct points: fewer than 24 neighbours, nothing moves
+  CAS3::denoise(smoothed, plan);  // 17 distinct points: fewer than 24 neighbors, nothing moves
   BOOST_TEST((smoothed == copies));
   for(int i = 0; i < 6; ++i)
     for(int j = 0; j < 6; ++j)
@@ -473,7 +473,7 @@ BOOST_AUTO_TEST_CASE(denoise_leaves_degenerate_neighbourhoods_in_place)
   smoothed = line;
   CAS3::denoise(smoothed, plan);
   BOOST_TEST((smoothed == line));
-  // on one circle: every neighbourhood lies on a conic of its plane
+  // on one circle: every neighborhood lies on a conic of its plane
   std::vector<Point> circle;
   for(int i = 0; i < 100; ++i)
     circle.push_back(Point(std::cos(0.0628 * i), std::sin(0.0628 * i), 0.5));

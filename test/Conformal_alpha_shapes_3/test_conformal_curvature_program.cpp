@@ -393,7 +393,7 @@ Csv run_on(const std::string& name, const std::vector<Point>& points, const std:
 } // namespace
 
 // Extreme but valid input: a documented result each.
-BOOST_AUTO_TEST_CASE(extreme_input_gives_the_normalised_answer)
+BOOST_AUTO_TEST_CASE(extreme_input_gives_the_normalized_answer)
 {
   const std::vector<Point> clean = sphere(2000);
   const Csv reference = run_on("clean.xyz", clean);
@@ -503,7 +503,7 @@ BOOST_AUTO_TEST_CASE(extreme_input_gives_the_normalised_answer)
     BOOST_TEST(csv.rows[2000][20] == 1);
     BOOST_TEST(csv.rows[5][20] == 0);
   }
-  // exactly cospherical points (the 8 corners of a cube, 6 face centres
+  // exactly cospherical points (the 8 corners of a cube, 6 face centers
   // pushed onto the sphere): a valid run
   {
     std::vector<Point> co;

@@ -225,18 +225,18 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(saddle_mesh, Mesh, Mesh_types)
     for(CAS3::Curvature_estimator e : all_estimators)
     {
       const Estimate<Mesh> est(mesh, 2, e);
-      std::size_t centre = 0;
+      std::size_t center = 0;
       for(std::size_t i = 0; i < est.points.size(); ++i)
         if((est.points[i] - CGAL::ORIGIN).squared_length() <
-           (est.points[centre] - CGAL::ORIGIN).squared_length())
-          centre = i;
+           (est.points[center] - CGAL::ORIGIN).squared_length())
+          center = i;
       BOOST_TEST_INFO("scale " << scale << " estimator " << estimator_name[e]);
       const double tol = e == CAS3::QUADRIC_FIT ? 0.05 : 0.3;
-      BOOST_TEST(est.K[centre] * scale * scale < 0);
-      BOOST_TEST(std::abs(est.K[centre] * scale * scale + 4) < 4 * tol);
-      BOOST_TEST(std::abs(est.H[centre] * scale) < 2 * tol);
-      BOOST_TEST(std::abs(est.principal[centre].max_direction.y()) > 0.9);
-      BOOST_TEST(est.normals[centre].z() > 0.99);
+      BOOST_TEST(est.K[center] * scale * scale < 0);
+      BOOST_TEST(std::abs(est.K[center] * scale * scale + 4) < 4 * tol);
+      BOOST_TEST(std::abs(est.H[center] * scale) < 2 * tol);
+      BOOST_TEST(std::abs(est.principal[center].max_direction.y()) > 0.9);
+      BOOST_TEST(est.normals[center].z() > 0.99);
     }
   }
 }
@@ -266,7 +266,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(degenerate_meshes, Mesh, Mesh_types)
     Mesh empty;
     BOOST_TEST(CAS3::estimate_vertex_curvatures(empty) == 0u);
   }
-  // a lone triangle: normals defined, curvature not (too few neighbours)
+  // a lone triangle: normals defined, curvature not (too few neighbors)
   {
     Mesh tri;
     CGAL::make_triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), tri);
@@ -380,7 +380,7 @@ Surface_mesh rough_sphere(std::size_t n)
 } // namespace
 
 // The parallel run (TBB's threads when CGAL_LINKED_WITH_TBB, else serial)
-// gives the same bits as the serial run, for every kind of neighbourhood.
+// gives the same bits as the serial run, for every kind of neighborhood.
 BOOST_AUTO_TEST_CASE(parallel_run_matches_the_serial_run_bit_for_bit)
 {
 #ifdef CGAL_LINKED_WITH_TBB

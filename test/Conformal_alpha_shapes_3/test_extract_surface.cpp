@@ -444,7 +444,7 @@ BOOST_AUTO_TEST_CASE(open_cap_is_one_consistent_sheet)
 // Open sheets that continue each other across a gap that the front does
 // not bridge are oriented alike: the two floors of a step whose riser was
 // not sampled (the square [-1, 1]^2 without the strip |x| < 0.05, a gap of
-// 7 spacings, and lifted by 0.05, 3.5 spacings, for x > 0). The centre of
+// 7 spacings, and lifted by 0.05, 3.5 spacings, for x > 0). The center of
 // the vertices lies between the floors, so away from it alone they faced
 // opposite ways (agreement 50.5% up to one flip before the gap joining).
 // At fewer points the front bridges the gap: the scene keeps 20,000 under
@@ -571,7 +571,7 @@ BOOST_AUTO_TEST_CASE(noise_estimate)
 }
 
 // ---------------------------------------------------------------------------
-// Every point at every scale, radius neighbourhoods, the automatic radius
+// Every point at every scale, radius neighborhoods, the automatic radius
 
 namespace {
 
@@ -643,7 +643,7 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
   }
   BOOST_TEST_MESSAGE("own vertex " << own << ", nearest surface point " << nearest << ", no value " << none);
   BOOST_TEST(nearest > 50u);
-  BOOST_TEST(none > 50u);  // the cap's centre is about 12 spacings from its rim
+  BOOST_TEST(none > 50u);  // the cap's center is about 12 spacings from its rim
 }
 
 // A radius in model units means the same on two samplings of one surface:
@@ -700,9 +700,9 @@ BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
   BOOST_TEST(by_radius < 0.5 * by_rings);
 }
 
-// The automatic neighbourhood grows with the noise, from the data alone.
+// The automatic neighborhood grows with the noise, from the data alone.
 // Without denoising: the smoothing the pipeline applies by default leaves
-// errors correlated over its neighbourhood, which the residuals do not see
+// errors correlated over its neighborhood, which the residuals do not see
 // (measured: with it, 2, 11.3, 5.7 and 5.7 spacings at noise 0, 0.1, 0.3,
 // 0.5; see the manual).
 BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)

@@ -1,4 +1,4 @@
-// The colour ramp of the program's surfaces and of the renderer: blue
+// The color ramp of the program's surfaces and of the renderer: blue
 // (concave) - white - red (convex) by a per-vertex curvature, grey where it
 // is undefined; saturated at the 95th percentile of its magnitude, so that
 // a few extreme values do not wash out the rest.
@@ -14,10 +14,10 @@
 
 namespace cas3 {
 
-// Writes into `colour` (a vertex property map of CGAL::IO::Color) the ramp
+// Writes into `color` (a vertex property map of CGAL::IO::Color) the ramp
 // of `value` (a vertex property map of a floating-point type).
-template <class Mesh, class ValueMap, class ColourMap>
-void colour_by_curvature(const Mesh& mesh, const ValueMap& value, ColourMap& colour)
+template <class Mesh, class ValueMap, class ColorMap>
+void color_by_curvature(const Mesh& mesh, const ValueMap& value, ColorMap& color)
 {
   std::vector<double> magnitude;
   for(auto v : mesh.vertices())
@@ -35,12 +35,12 @@ void colour_by_curvature(const Mesh& mesh, const ValueMap& value, ColourMap& col
     const double x = double(value[v]);
     if(!std::isfinite(x) || !(saturation > 0))
     {
-      colour[v] = CGAL::IO::Color(128, 128, 128);
+      color[v] = CGAL::IO::Color(128, 128, 128);
       continue;
     }
     const double t = (std::max)(-1.0, (std::min)(1.0, x / saturation));
     const unsigned char fade = static_cast<unsigned char>(255 * (1 - std::abs(t)) + 0.5);
-    colour[v] = t >= 0 ? CGAL::IO::Color(255, fade, fade) : CGAL::IO::Color(fade, fade, 255);
+    color[v] = t >= 0 ? CGAL::IO::Color(255, fade, fade) : CGAL::IO::Color(fade, fade, 255);
   }
 }
 

@@ -1,4 +1,4 @@
-// What conformal_curvature writes per layer (a scale and a neighbourhood):
+// What conformal_curvature writes per layer (a scale and a neighborhood):
 // the values per input point, the binary PLY point cloud that holds them,
 // and the same values as float properties of the surface PLY. The
 // benchmark of the default job writes through the same code.
@@ -32,7 +32,7 @@ struct Layer
                                                          "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
     return names;
   }
-  std::string label;       // the property suffix: [scale_]neighbourhood
+  std::string label;       // the property suffix: [scale_]neighborhood
   std::string description; // for the file header
   std::vector<float> values;        // number_of_values per point
   std::vector<std::uint8_t> source; // Point_source per point

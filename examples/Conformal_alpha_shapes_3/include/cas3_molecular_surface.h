@@ -94,7 +94,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Molecule_kernel;
 
 struct Atom
 {
-  Molecule_kernel::Point_3 centre;
+  Molecule_kernel::Point_3 center;
   double radius = 0;    // van der Waals radius (angstroms)
   std::string element;  // upper case: "C", "FE"
   std::string name;     // atom name, trimmed: "CA"
@@ -212,7 +212,7 @@ inline std::vector<Atom> parse_pdb(const std::string& text, const std::string& n
       xyz[k] = read_detail::number(field, where + ": " + "xyz"[k] + " coordinate (columns "
                                               + std::to_string(31 + 8 * k) + "-" + std::to_string(38 + 8 * k) + ")");
     }
-    atom.centre = Molecule_kernel::Point_3(xyz[0], xyz[1], xyz[2]);
+    atom.center = Molecule_kernel::Point_3(xyz[0], xyz[1], xyz[2]);
 
     const std::string symbol = trimmed(columns(line, 77, 78));
     if(!symbol.empty())
@@ -281,7 +281,7 @@ namespace molecule_detail {
 typedef Molecule_kernel::Point_3 Point;
 typedef Molecule_kernel::Vector_3 Vector;
 
-// A uniform grid of cubes of side `cell` over points, for neighbour queries.
+// A uniform grid of cubes of side `cell` over points, for neighbor queries.
 class Grid
 {
 public:
@@ -357,9 +357,9 @@ inline Surface_sample sample_atom_spheres(const std::vector<Atom>& atoms, double
   double largest = 0;
   for(const Atom& a : atoms)
     largest = (std::max)(largest, a.radius + probe);
-  Grid centres(2 * largest);
+  Grid centers(2 * largest);
   for(std::size_t i = 0; i < atoms.size(); ++i)
-    centres.insert(atoms[i].centre, i);
+    centers.insert(atoms[i].center, i);
   Surface_sample dense;
   const double golden_angle = CGAL_PI * (3 - std::sqrt(5.0));
   for(std::size_t i = 0; i < atoms.size(); ++i)
@@ -372,10 +372,10 @@ inline Surface_sample sample_atom_spheres(const std::vector<Atom>& atoms, double
       const double z = 1 - (2 * double(k) + 1) / double(n);
       const double s = std::sqrt((std::max)(0.0, 1 - z * z));
       const Vector u(s * std::cos(golden_angle * double(k)), s * std::sin(golden_angle * double(k)), z);
-      const Point p = atoms[i].centre + R * u;
-      const bool buried = centres.any_near(p, [&](std::size_t j) {
+      const Point p = atoms[i].center + R * u;
+      const bool buried = centers.any_near(p, [&](std::size_t j) {
         const double Rj = atoms[j].radius + probe;
-        return j != i && CGAL::squared_distance(p, atoms[j].centre) < Rj * Rj;
+        return j != i && CGAL::squared_distance(p, atoms[j].center) < Rj * Rj;
       });
       if(buried)
         continue;
@@ -470,7 +470,7 @@ inline std::size_t nearest_sphere(const std::vector<Atom>& atoms, const Molecule
   double best = std::numeric_limits<double>::infinity();
   for(std::size_t i = 0; i < atoms.size(); ++i)
   {
-    const double d = std::abs(std::sqrt(CGAL::squared_distance(p, atoms[i].centre)) - atoms[i].radius);
+    const double d = std::abs(std::sqrt(CGAL::squared_distance(p, atoms[i].center)) - atoms[i].radius);
     if(d < best)
     {
       best = d;
@@ -504,7 +504,7 @@ inline void sample_skin_surface(const std::vector<Atom>& atoms, double spacing, 
   typedef Skin_surface_sample::Traits::Weighted_point_3 Weighted_point;
   std::vector<Weighted_point> balls;
   for(const Atom& a : atoms)
-    balls.emplace_back(a.centre, a.radius * a.radius);
+    balls.emplace_back(a.center, a.radius * a.radius);
   // grow_balls: the weights are divided by the shrink factor first, so that
   // an isolated atom's skin is its van der Waals sphere
   const Skin skin(balls.begin(), balls.end(), shrink, true);

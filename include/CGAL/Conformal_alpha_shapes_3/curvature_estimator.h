@@ -9,18 +9,18 @@ namespace Conformal_alpha_shapes_3 {
 
 /// \ingroup PkgConformalAlphaShapes3Curvature
 /// How `estimate_vertex_curvatures()` estimates curvature at a vertex from
-/// its neighbourhood. See the manual for the measured accuracy of each.
+/// its neighborhood. See the manual for the measured accuracy of each.
 enum Curvature_estimator
 {
   /// The paper's method: Chen-Wu vertex normals, a normal curvature per
-  /// neighbour from normal differences, and the Euler fit with `a` fixed to
+  /// neighbor from normal differences, and the Euler fit with `a` fixed to
   /// the largest normal curvature and `b`, `c` by least squares.
   PAPER_EULER_FIT,
   /// The same normal curvatures, with all three Euler coefficients fitted by
   /// least squares.
   EULER_LEAST_SQUARES_FIT,
   /// A quadric height function fitted by least squares to the positions of
-  /// the neighbourhood in the frame of the Chen-Wu normal, with linear terms; the
+  /// the neighborhood in the frame of the Chen-Wu normal, with linear terms; the
   /// output normal is the fitted surface's. The default.
   QUADRIC_FIT
 };

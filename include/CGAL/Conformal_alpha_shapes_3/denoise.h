@@ -38,20 +38,20 @@ enum Denoising
 /// What `estimate_noise()` measured.
 struct Noise_estimate
 {
-  /// the mean distance from a point to its 6 nearest neighbours, measured
+  /// the mean distance from a point to its 6 nearest neighbors, measured
   /// in the local tangent plane (so that noise does not inflate it), in model units
   double spacing = 0;
   /// the standard deviation of the points' offsets from a local cubic
-  /// surface fitted to 16 neighbours, as a multiple of `spacing`
+  /// surface fitted to 16 neighbors, as a multiple of `spacing`
   double noise = 0;
-  /// the same with 24 neighbours: noise reads the same at both sizes,
+  /// the same with 24 neighbors: noise reads the same at both sizes,
   /// surface detail that the sampling does not resolve grows with the size
   double noise_24 = 0;
 
   /// Whether automatic denoising smooths the points: the noise exceeds
   /// 0.02 (below it the interpolating surface does not fold; clean samples
   /// read 0.011 or less, even with detail) and does not grow by more than
-  /// 30% from 16 to 24 neighbours (which would mark unresolved detail).
+  /// 30% from 16 to 24 neighbors (which would mark unresolved detail).
   bool calls_for_denoising() const { return noise > 0.02 && noise_24 <= 1.3 * noise; }
 };
 
@@ -69,20 +69,20 @@ inline double chi_squared_median_ratio(double nu)
 // The residual variance of a least-squares cubic height function over the
 // first `k` (at most 32) of `neighbors` (the query point first, then by distance), in
 // the PCA frame of those points, and the mean tangential distance to the
-// 6 nearest. Returns false on a degenerate neighbourhood.
+// 6 nearest. Returns false on a degenerate neighborhood.
 inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, int k,
                                double& variance, double& spacing)
 {
   const int coefficients = 10;
   if(int(neighbors.size()) < k || k <= coefficients || k > 32)
     return false;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
   for(int i = 0; i < k; ++i)
-    centre += neighbors[i];
-  centre /= double(k);
+    center += neighbors[i];
+  center /= double(k);
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for(int i = 0; i < k; ++i)
-    covariance += (neighbors[i] - centre) * (neighbors[i] - centre).transpose();
+    covariance += (neighbors[i] - center) * (neighbors[i] - center).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> frame(covariance);  // ascending eigenvalues
   const Eigen::Vector3d n = frame.eigenvectors().col(0), u = frame.eigenvectors().col(2),
                         v = frame.eigenvectors().col(1);
@@ -190,7 +190,7 @@ Noise_estimate estimate_noise(const PointRange& points)
 
 /// \ingroup PkgConformalAlphaShapes3Multiscale
 /// How the points are smoothed: `passes` projections of every point onto a
-/// degree 2 jet fitted to it and its `neighbors` nearest neighbours (what
+/// degree 2 jet fitted to it and its `neighbors` nearest neighbors (what
 /// CGAL's `jet_smooth_point_set()` does with its default degrees, by the
 /// package's own faster fit: see `denoise()`); no smoothing when `passes` is 0.
 struct Denoising_plan
@@ -202,7 +202,7 @@ struct Denoising_plan
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 The smoothing for a noise level `noise` (relative to the spacing): one
-pass with `max(24, 500 noise)` neighbours up to 64 neighbours, then two
+pass with `max(24, 500 noise)` neighbors up to 64 neighbors, then two
 passes with `max(24, 200 noise)`, then three with 64. After one pass the
 remaining roughness is about `5 noise / neighbors` times the spacing, after
 two about `2 noise / neighbors`: the plan keeps it near 0.01, below the
@@ -235,9 +235,9 @@ time (the manual, "Noise"). With TBB (`CGAL_LINKED_WITH_TBB`) the points of
 a pass are smoothed in parallel, with the serial result bit for bit.
 Coincident points are smoothed once, as one (a jet fitted to copies of one
 point is undefined); a point whose fit is degenerate anyway (its
-neighbours coincident, on a line, or on one conic of their plane) stays
+neighbors coincident, on a line, or on one conic of their plane) stays
 where it is; nothing moves when there are no more distinct points than
-neighbours.
+neighbors.
 */
 template <class PointRange>
 void denoise(PointRange& points, const Denoising_plan& plan)

@@ -168,10 +168,10 @@ Neighborhood, by the first of these named parameters given:
 - `ring_size`: the `k`-ring of the vertex; up to two more rings are used when
   it is too small.
 
-A neighbourhood is too small or too degenerate for the fit with fewer
-neighbours than unknowns, all neighbours along one line, or a singular
+A neighborhood is too small or too degenerate for the fit with fewer
+neighbors than unknowns, all neighbors along one line, or a singular
 system. Border
-vertices are estimated from their one-sided neighbourhood. Faces of zero area
+vertices are estimated from their one-sided neighborhood. Faces of zero area
 do not contribute to the normals. A vertex whose normal or curvature is still
 undefined (an isolated vertex, only degenerate faces, too few vertices even
 with the wider rings) gets NaN values and is counted in the return value.
@@ -218,7 +218,7 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamDefault{not computed}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_neighborhood_radius_map}
-    \cgalParamDescription{output: the radius of the neighbourhood used (for rings: the distance of the farthest neighbour used; NaN where the curvature is undefined)}
+    \cgalParamDescription{output: the radius of the neighborhood used (for rings: the distance of the farthest neighbor used; NaN where the curvature is undefined)}
     \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `GT::FT` as value}
     \cgalParamDefault{not computed}
   \cgalParamNEnd
@@ -228,12 +228,12 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamDefault{empty: not used}
   \cgalParamNEnd
   \cgalParamNBegin{neighborhood_radius}
-    \cgalParamDescription{the neighbourhood's radius, in the units of the points (see above)}
+    \cgalParamDescription{the neighborhood's radius, in the units of the points (see above)}
     \cgalParamType{`double`}
     \cgalParamDefault{0: not used}
   \cgalParamNEnd
   \cgalParamNBegin{ring_size}
-    \cgalParamDescription{the size `k >= 1` of the ring of neighbours used at each vertex}
+    \cgalParamDescription{the size `k >= 1` of the ring of neighbors used at each vertex}
     \cgalParamType{`int`}
     \cgalParamDefault{1}
   \cgalParamNEnd
@@ -284,7 +284,7 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
 /*!
 \ingroup PkgConformalAlphaShapes3Curvature
 The same estimate at the single vertex `v`, written into the maps passed in
-`np` at `v` only. Its cost is that of the vertex's neighbourhood.
+`np` at `v` only. Its cost is that of the vertex's neighborhood.
 \returns whether the curvature at `v` is defined.
 */
 template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -155,7 +155,7 @@ facets between them are the surface.) The front only grows where the
 surface stays a manifold, so a noisy layer gives one sheet, not a shell
 with an inner wall, and an open scan one sheet with a border, not a
 two-sided slab. The surface at `a` is that sheet less its faces whose
-conformal value exceeds `a`: their neighbours get a border there, and
+conformal value exceeds `a`: their neighbors get a border there, and
 pieces of fewer than 8 faces left on their own are dropped. Vertices the
 front cannot attach, or whose faces all exceed `a`, are left off the
 surface (`number_of_points_off_surface`); so are pockets too small to
@@ -166,14 +166,14 @@ several scales of one shape, `Multiscale_curvatures` grows it once.
 Orientation (the manual, "Orientation"): with `reference_normals`, every
 sheet faces the side that the majority of the reference normals at its
 vertices point to; without, a closed sheet points out of the volume it
-encloses and an open sheet away from the centre of the surface's vertices.
+encloses and an open sheet away from the center of the surface's vertices.
 Parts that the front grew separately but that meet along border edges are
 one sheet, oriented alike, so that the pieces of one scan agree. Without
 reference normals, open sheets that continue each other across a gap the
 front did not bridge (border vertices within 8 local spacings of each
 other, the gap within 45 degrees of their tangent planes, their normals
 within 45 degrees of parallel: a strip the scan missed, a step whose riser
-it did not sample) face alike too, and point away from the centre
+it did not sample) face alike too, and point away from the center
 together; sheets offset along their normals (the two faces of a thin wall)
 are not joined, nor are closed sheets.
 

@@ -47,13 +47,13 @@ namespace Conformal_alpha_shapes_3 {
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
-Multi-scale curvature of a point cloud: the input is checked, recentred
+Multi-scale curvature of a point cloud: the input is checked, recenterd
 and rescaled, and isolated far outliers are left out (the manual, section
 "Input Rules"); the noise of the points is estimated (`estimate_noise()`)
 and, when it matters, the points are smoothed (`denoise()`); the conformal
 alpha shape of these working points is built once; then, for any scale,
 its surface is extracted (`extract_surface()` by default, or
-`extract_boundary_surface()`), and for any neighbourhood the curvature
+`extract_boundary_surface()`), and for any neighborhood the curvature
 estimated on that surface (`estimate_vertex_curvatures()`) is given back
 per input point.
 
@@ -61,7 +61,7 @@ Everything given back is in the input's units and indices: surfaces lie at
 the (smoothed) positions mapped back to input coordinates, radii and
 distances are lengths of the input, curvatures are inverse lengths of the
 input, and values are reported by input index. Only `shape()` is in the
-working frame, the input recentred and scaled by a power of two, so that
+working frame, the input recenterd and scaled by a power of two, so that
 no construction overflows or underflows whatever the input's magnitude.
 
 Surfaces are `Surface_mesh` objects with the vertex properties
@@ -101,7 +101,7 @@ public:
       \cgalParamDefault{`AUTOMATIC_DENOISING`: as `denoising_plan()` says, when `Noise_estimate::calls_for_denoising()`}
     \cgalParamNEnd
     \cgalParamNBegin{denoising_neighbors}
-      \cgalParamDescription{the neighbours of the smoothing jet fit}
+      \cgalParamDescription{the neighbors of the smoothing jet fit}
       \cgalParamType{`unsigned int`}
       \cgalParamDefault{as `denoising_plan()` says for the estimated noise (at least 24)}
     \cgalParamNEnd
@@ -231,7 +231,7 @@ public:
     return report;
   }
 
-  /// The radius of a neighbourhood of kind `Neighborhood::RADIUS` or
+  /// The radius of a neighborhood of kind `Neighborhood::RADIUS` or
   /// `Neighborhood::SPACINGS`, in input units.
   double radius(const Neighborhood& neighborhood) const
   {
@@ -245,7 +245,7 @@ public:
 
   /*!
   Estimates the curvature of `surface` (from `extract_surface()`) with the
-  neighbourhood `neighborhood` into its properties, and returns it for every
+  neighborhood `neighborhood` into its properties, and returns it for every
   input point: a vertex of the surface has its own fit; any other point
   takes the values at its nearest point on the surface, interpolated over
   the facet there, unless it is farther than `far_from_surface()` local
@@ -262,10 +262,10 @@ public:
   }
 
   /*!
-  The same for several neighbourhoods at once, one result per
-  neighbourhood (in their order), the surface's properties holding the
-  last one's. Cheaper than one call per neighbourhood: each vertex's
-  neighbourhoods are found by one search, the largest, and each fit runs
+  The same for several neighborhoods at once, one result per
+  neighborhood (in their order), the surface's properties holding the
+  last one's. Cheaper than one call per neighborhood: each vertex's
+  neighborhoods are found by one search, the largest, and each fit runs
   on a part of it. With TBB (`CGAL_LINKED_WITH_TBB`) the vertices are
   estimated in parallel, with the same results.
   */
@@ -342,7 +342,7 @@ private:
     return working;
   }
 
-  // The radius of a neighbourhood in the working frame.
+  // The radius of a neighborhood in the working frame.
   double working_radius(const Neighborhood& neighborhood) const
   {
     return neighborhood.kind() == Neighborhood::SPACINGS ? neighborhood.value() * m_noise.spacing
@@ -574,11 +574,11 @@ struct Curvature_layer
 /// The scales of `multiscale_curvatures()` and of the program when none are
 /// named: the automatic one (see the manual for why coarser conformal scales
 /// are not in the default: above the automatic scale the advancing front
-/// gives nearly the same surface; the neighbourhood radius is what coarsens).
+/// gives nearly the same surface; the neighborhood radius is what coarsens).
 inline std::vector<Scale> default_scales() { return {Scale::automatic()}; }
 
 /// \ingroup PkgConformalAlphaShapes3Multiscale
-/// The neighbourhoods of `multiscale_curvatures()` and of the program when
+/// The neighborhoods of `multiscale_curvatures()` and of the program when
 /// none are named: the automatic one, then radii of 2, 4, 8 and 16 sample
 /// spacings, from the finest detail to a summary of larger regions.
 inline std::vector<Neighborhood> default_neighborhoods()
@@ -590,10 +590,10 @@ inline std::vector<Neighborhood> default_neighborhoods()
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
-For each requested scale and neighbourhood, the curvature of every input
+For each requested scale and neighborhood, the curvature of every input
 point (see the manual, section "Multi-scale Curvature of a Point Cloud"),
 from one conformal alpha shape of the points. The layers come scale by
-scale, neighbourhoods inside. For large inputs, where all layers do not fit
+scale, neighborhoods inside. For large inputs, where all layers do not fit
 in memory, use `Multiscale_curvatures` one layer at a time.
 
 \tparam PointRange a range of `Kernel::Point_3`
@@ -606,7 +606,7 @@ in memory, use `Multiscale_curvatures` one layer at a time.
     \cgalParamDefault{`default_scales()`}
   \cgalParamNEnd
   \cgalParamNBegin{neighborhoods}
-    \cgalParamDescription{the neighbourhoods of the curvature fits}
+    \cgalParamDescription{the neighborhoods of the curvature fits}
     \cgalParamType{`std::vector<Neighborhood>`}
     \cgalParamDefault{`default_neighborhoods()`}
   \cgalParamNEnd

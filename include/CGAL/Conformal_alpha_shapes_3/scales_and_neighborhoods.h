@@ -5,7 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_SCALES_AND_NEIGHBORHOODS_H
 
 // The vocabulary of a layer of multi-scale curvature: the scale `a` of the
-// surface, the neighbourhood of the fit, and what a point gets.
+// surface, the neighborhood of the fit, and what a point gets.
 
 #include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>
 
@@ -94,7 +94,7 @@ private:
 
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
-The neighbourhood of the curvature fit (see `estimate_vertex_curvatures()`):
+The neighborhood of the curvature fit (see `estimate_vertex_curvatures()`):
 a ring size, a radius in model units, a radius in multiples of the
 measured sample spacing (`Noise_estimate::spacing`), or automatic: per
 point, one of the radii `automatic_radii()` times the spacing, chosen from
@@ -178,7 +178,7 @@ enum Point_source
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 The curvature of the surface at one input point, at one scale and
-neighbourhood; every number is NaN where `source` is `NO_VALUE`.
+neighborhood; every number is NaN where `source` is `NO_VALUE`.
 */
 template <class Kernel>
 struct Point_curvature
@@ -187,8 +187,8 @@ struct Point_curvature
   /// from the (smoothed) point to the surface point whose values these are
   /// (0 on its own vertex; NaN when the surface is empty)
   double distance = std::numeric_limits<double>::quiet_NaN();
-  /// the radius of the neighbourhood of the fit (for rings: the farthest
-  /// neighbour used); interpolated like the values
+  /// the radius of the neighborhood of the fit (for rings: the farthest
+  /// neighbor used); interpolated like the values
   double radius = std::numeric_limits<double>::quiet_NaN();
   typename Kernel::Vector_3 normal = typename Kernel::Vector_3(std::numeric_limits<double>::quiet_NaN(),
     std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());

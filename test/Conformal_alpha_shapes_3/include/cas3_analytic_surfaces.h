@@ -2,7 +2,8 @@
 // every point comes with its true outward unit normal, mean curvature H and
 // Gaussian curvature K (convex with outward normals: H > 0; sphere of radius
 // r: H = 1/r, K = 1/r^2), the surface area and the sample spacing
-// sqrt(area / n) (METHOD.md, section 7). For the evaluation program and for
+// sqrt(area / n) (the manual, "Measured: Advancing Front against the Solid
+// Boundary"). For the evaluation program and for
 // tests.
 //
 // The truth comes from an implicit function F (F < 0 inside, F > 0 outside),

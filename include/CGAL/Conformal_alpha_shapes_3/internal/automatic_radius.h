@@ -4,8 +4,8 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_AUTOMATIC_RADIUS_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_AUTOMATIC_RADIUS_H
 
-// The automatic neighbourhood of the curvature fit (the manual,
-// "Neighbourhoods"): one of several candidate radii per vertex, chosen from
+// The automatic neighborhood of the curvature fit (the manual,
+// "Neighborhoods"): one of several candidate radii per vertex, chosen from
 // the fits' residuals alone.
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
@@ -23,7 +23,7 @@ namespace internal {
 // The half-width
 // of the intervals of the mean curvature, in standard errors computed as if
 // the heights' errors were independent. Wide, because they are not: the
-// pipeline smooths noisy points (`denoise()`, jets of 24 to 64 neighbours)
+// pipeline smooths noisy points (`denoise()`, jets of 24 to 64 neighbors)
 // before the surface is built, which leaves errors correlated over about
 // that many points (about 7 times the independent standard error) and hides
 // them from the residuals. Measured on the ellipsoid and torus at 20k points
@@ -43,7 +43,7 @@ struct Candidate_fit
   double radius;
 };
 
-// The automatic neighbourhood: the vertex's noise is measured from the
+// The automatic neighborhood: the vertex's noise is measured from the
 // residual variances of the fits at the smallest candidate radii,
 // s^2(r) = sigma^2 + beta r^6 (the noise, and the cubic terms that a
 // quadric misses), fitted by least squares weighted by their inverse

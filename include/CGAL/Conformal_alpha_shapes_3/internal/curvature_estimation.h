@@ -4,8 +4,8 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_ESTIMATION_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CURVATURE_ESTIMATION_H
 
-// The curvature at every vertex of a mesh for one or several neighbourhood
-// rules (the manual, "Curvature on a Triangle Mesh" and "Neighbourhoods"):
+// The curvature at every vertex of a mesh for one or several neighborhood
+// rules (the manual, "Curvature on a Triangle Mesh" and "Neighborhoods"):
 // the vertex normals, the searches (internal/surface_neighborhoods.h), the
 // fits on them (internal/curvature_fits.h) and the automatic choice among
 // candidate radii. `estimate_vertex_curvatures()` runs one rule;
@@ -68,7 +68,7 @@ Vec3 chen_wu_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor
   return len > 0 ? Vec3(sum / len) : nan_vector();
 }
 
-// Which neighbours a fit uses (see `estimate_vertex_curvatures()`): a ring
+// Which neighbors a fit uses (see `estimate_vertex_curvatures()`): a ring
 // size, a radius, or candidate radii to choose from per vertex.
 struct Neighborhood_rule
 {
@@ -78,7 +78,7 @@ struct Neighborhood_rule
 };
 
 // What one rule gives at one vertex: the curvature and the radius of the
-// neighbourhood used, NaN where undefined.
+// neighborhood used, NaN where undefined.
 struct Vertex_estimate
 {
   Local_curvature curvature{nan_vector(), std::numeric_limits<double>::quiet_NaN(),
@@ -88,11 +88,11 @@ struct Vertex_estimate
   bool defined() const { return std::isfinite(curvature.k1) && std::isfinite(curvature.k2); }
 };
 
-// The estimates of several neighbourhood rules at every vertex, sharing
+// The estimates of several neighborhood rules at every vertex, sharing
 // one search per vertex: the radii of all rules (fixed ones and
 // candidates) are nested balls found by one search, the ring sizes nested
 // rings found by another, and each fit runs on a prefix of what the search
-// found. A neighbourhood too small or too degenerate for the fit is widened
+// found. A neighborhood too small or too degenerate for the fit is widened
 // (two more rings, or the radius by 1.5 twice) before the vertex is given
 // up (NaN).
 class Curvature_estimation
@@ -158,8 +158,8 @@ private:
     return std::size_t(std::lower_bound(m_radii.begin(), m_radii.end(), r) - m_radii.begin());
   }
 
-  // Where the prepared neighbours of the levels up to one end: how many
-  // neighbours, and how many of the quadric fit's shells hold them.
+  // Where the prepared neighbors of the levels up to one end: how many
+  // neighbors, and how many of the quadric fit's shells hold them.
   struct Level_end
   {
     std::size_t neighbors = 0, shells = 0;
@@ -218,7 +218,7 @@ private:
       ends[level] = end;
   }
 
-  // The fit over the prepared neighbours up to `end`, fading at `fade`.
+  // The fit over the prepared neighbors up to `end`, fading at `fade`.
   bool fit(const Tangent_frame& f, const Level_end& end, double fade, double length, Workspace& ws,
            Local_curvature& out, Quadric_fit_error* error) const
   {
@@ -291,7 +291,7 @@ private:
 
   // Rings up to the largest ring size plus two (the widening), fitted on
   // each prefix; a ring's fit fades at 1.5 times the distance of its
-  // farthest neighbour, which is the radius reported.
+  // farthest neighbor, which is the radius reported.
   void estimate_in_rings(std::size_t v, Workspace& ws, Vertex_estimate* out) const
   {
     const Tangent_frame f = frame_from_normal(m_normals[v]);

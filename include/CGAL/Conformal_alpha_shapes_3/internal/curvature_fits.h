@@ -169,12 +169,12 @@ struct Quadric_fit_error
   double per_noise = 0;           // standard error of H per unit of noise: mean_curvature / noise
 };
 
-// Neighbours of a vertex as the quadric fit sees them, summed by shells:
-// the neighbours in one shell (about the same distance from the vertex, see
+// Neighbors of a vertex as the quadric fit sees them, summed by shells:
+// the neighbors in one shell (about the same distance from the vertex, see
 // `quadric_shell_index()`) share their sums, and a fit weighs the whole
 // shell by its kernel at the shell's mean squared distance. The cost of a
-// fit is then that of its shells, not of its neighbours: the fits at
-// several radii around a vertex share one pass over the neighbours.
+// fit is then that of its shells, not of its neighbors: the fits at
+// several radii around a vertex share one pass over the neighbors.
 // Coordinates (x, y, z) are in the vertex's tangent frame divided by a
 // length L; squared distances are in model units.
 struct Quadric_shell
@@ -215,23 +215,23 @@ inline int quadric_shell_index(double squared_distance, double squared_length)
 
 // Weighted least-squares fit of the height function
 //   z = A x^2 + B x y + C y^2 + D x + E y + F
-// to the vertex (at the origin) and the neighbours summed in
+// to the vertex (at the origin) and the neighbors summed in
 // `shells[0, shell_count)` (`neighbors` of them), in the frame `f` of the
 // vertex normal. The linear terms absorb the normal's error and the
 // constant term the vertex's own displacement (noise); the curvature is that
 // of the graph at the origin, positive where the surface bends away from
-// the normal. A neighbour at distance d has the weight
+// the normal. A neighbor at distance d has the weight
 // (1 - d^2 / (1.5 fade)^2)^4, which fades to 0 at 1.5 times `fade` (the
-// neighbourhood's radius), taken at its shell's mean squared distance; the
+// neighborhood's radius), taken at its shell's mean squared distance; the
 // shells are in coordinates divided by `length`, and the fit runs in
 // coordinates divided by `fade`, which condition it whatever the size of
-// the neighbourhood.
+// the neighborhood.
 // When `error` is given, it receives the uncertainty of the mean curvature
 // A + C for heights with independent noise of one standard deviation
 // (weighted least squares: the sandwich variance, and the residual variance
 // over the effective degrees of freedom; infinite with none left): what the
-// automatic neighbourhood weighs against the bias of larger neighbourhoods.
-// False with fewer than 5 neighbours or a singular system.
+// automatic neighborhood weighs against the bias of larger neighborhoods.
+// False with fewer than 5 neighbors or a singular system.
 inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std::size_t shell_count,
                         std::size_t neighbors, double fade, double length, Local_curvature& out,
                         Quadric_fit_error* error = nullptr)

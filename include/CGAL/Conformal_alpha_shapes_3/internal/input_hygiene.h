@@ -13,21 +13,21 @@
 //    from p to its k-th nearest other input point (k = 6; coincident points
 //    count), a point is an isolated outlier when
 //      d_k(p) > 30 * m, m the median of the positive d_k over all points, and
-//      d_k(p) > 30 * the median of d_k over p's k nearest neighbours.
+//      d_k(p) > 30 * the median of d_k over p's k nearest neighbors.
 //    The second condition keeps the points of a real cluster that is just
-//    sparser than the rest (their neighbours are as sparse as they are); a
+//    sparser than the rest (their neighbors are as sparse as they are); a
 //    group of at most k points far from everything else is removed (no
 //    group that small can make a surface patch of its own). Points whose
-//    distance to the robust centre exceeds 1e50 robust sizes are outliers
+//    distance to the robust center exceeds 1e50 robust sizes are outliers
 //    without further test (no double construction could hold both them and
 //    the rest). With fewer than 2 (k + 1) points, or when fewer than half
 //    the points have a positive d_k (mostly duplicates), no point is tested.
-// 3. The kept points are recentred on a robust centre c, the per-axis
+// 3. The kept points are recenterd on a robust center c, the per-axis
 //    median of the kept points, and divided by a robust size s, a power of
 //    two within a factor 2 of the median over the kept points of the
 //    largest coordinate difference to c (the largest distance to c when
 //    that median is 0; 1 when all kept points coincide). Multiplying by a
-//    power of two is exact, so the normalised points are (p - c) / s
+//    power of two is exact, so the normalized points are (p - c) / s
 //    rounded once, whatever the magnitude: georeferenced offsets (1e6-1e7),
 //    1e300 and 1e-300 scales all give points of size about 1.
 //
@@ -61,7 +61,7 @@ namespace internal {
 // The parameters of the outlier rule (see above).
 struct Input_hygiene_options
 {
-  unsigned int k = 6;             // which neighbour measures isolation
+  unsigned int k = 6;             // which neighbor measures isolation
   double isolation_factor = 30;   // how many median distances make a point isolated
   bool remove_outliers = true;
 };
@@ -73,24 +73,24 @@ struct Normalized_input
   typedef typename Kernel::Point_3 Point;
   typedef typename Kernel::Vector_3 Vector;
 
-  std::vector<Point> points;              // the kept points, normalised
+  std::vector<Point> points;              // the kept points, normalized
   std::vector<std::size_t> input_index;   // kept point -> input index
   std::vector<std::size_t> outliers;      // input indices of the removed points, increasing
   std::vector<bool> is_outlier;           // by input index
-  std::array<double, 3> centre = {{0, 0, 0}};  // c, in input units
+  std::array<double, 3> center = {{0, 0, 0}};  // c, in input units
   int size_exponent = 0;                  // s = 2^size_exponent
 
   double size() const { return std::ldexp(1.0, size_exponent); }
 
-  // input units <-> normalised units
+  // input units <-> normalized units
   Point to_input(const Point& q) const
   {
-    return Point(centre[0] + std::ldexp(q.x(), size_exponent), centre[1] + std::ldexp(q.y(), size_exponent),
-                 centre[2] + std::ldexp(q.z(), size_exponent));
+    return Point(center[0] + std::ldexp(q.x(), size_exponent), center[1] + std::ldexp(q.y(), size_exponent),
+                 center[2] + std::ldexp(q.z(), size_exponent));
   }
   Point to_normalized(const Point& p) const
   {
-    return Point(difference(p.x(), centre[0]), difference(p.y(), centre[1]), difference(p.z(), centre[2]));
+    return Point(difference(p.x(), center[0]), difference(p.y(), center[1]), difference(p.z(), center[2]));
   }
   double length_to_input(double l) const { return std::ldexp(l, size_exponent); }
   double length_from_input(double l) const { return std::ldexp(l, -size_exponent); }
@@ -117,7 +117,7 @@ inline double median(std::vector<double> v)
 
 // per-axis median of the points whose indices are in `which`
 template <class Point>
-std::array<double, 3> median_centre(const std::vector<Point>& p, const std::vector<std::size_t>& which)
+std::array<double, 3> median_center(const std::vector<Point>& p, const std::vector<std::size_t>& which)
 {
   std::array<double, 3> c = {{0, 0, 0}};
   std::vector<double> v(which.size());
@@ -154,7 +154,7 @@ int size_exponent(const std::vector<Point>& p, const std::vector<std::size_t>& w
 
 } // namespace hygiene_detail
 
-// Normalises `input` and removes isolated far outliers (rules above).
+// Normalizes `input` and removes isolated far outliers (rules above).
 // Throws std::invalid_argument naming the first point with a NaN or
 // infinite coordinate.
 template <class Kernel, class PointRange>
@@ -179,9 +179,9 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
   const unsigned int k = (std::max)(options.k, 1u);
   if(options.remove_outliers && n >= 2 * (std::size_t(k) + 1))
   {
-    // a first normalisation on all points, for the distances
-    result.centre = hygiene_detail::median_centre(p, all);
-    result.size_exponent = hygiene_detail::size_exponent(p, all, result.centre);
+    // a first normalization on all points, for the distances
+    result.center = hygiene_detail::median_center(p, all);
+    result.size_exponent = hygiene_detail::size_exponent(p, all, result.center);
     std::vector<Point> q;
     std::vector<std::size_t> near;  // indices of the points tested by distances
     for(std::size_t i = 0; i < n; ++i)
@@ -197,7 +197,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
       }
     }
 
-    // distance to the k-th nearest other point, and the k neighbours
+    // distance to the k-th nearest other point, and the k neighbors
     typedef CGAL::Search_traits_3<Kernel> Base_traits;
     typedef typename CGAL::Pointer_property_map<Point>::const_type Point_map;
     typedef CGAL::Search_traits_adapter<std::size_t, Point_map, Base_traits> Traits;
@@ -205,7 +205,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
     typedef typename Search::Tree Tree;
     typedef typename Search::Distance Distance;
     std::vector<double> dk(q.size(), 0);
-    std::vector<std::size_t> neighbours(q.size() * k);
+    std::vector<std::size_t> neighbors(q.size() * k);
     if(q.size() > k)
     {
       const std::vector<Point>& const_q = q;
@@ -230,12 +230,12 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
           }
           if(found < k)
           {
-            neighbours[i * k + found++] = hit.first;
+            neighbors[i * k + found++] = hit.first;
             dk[i] = std::sqrt(hit.second);
           }
         }
         for(; found < k; ++found)  // fewer than k others
-          neighbours[i * k + found] = i;
+          neighbors[i * k + found] = i;
       });
       std::vector<double> positive;
       for(double d : dk)
@@ -250,7 +250,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
           if(!(dk[i] > options.isolation_factor * m))
             continue;
           for(unsigned int j = 0; j < k; ++j)
-            around[j] = dk[neighbours[i * k + j]];
+            around[j] = dk[neighbors[i * k + j]];
           if(dk[i] > options.isolation_factor * median(around))
             result.is_outlier[near[i]] = true;
         }
@@ -261,9 +261,9 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
   for(std::size_t i = 0; i < n; ++i)
     (result.is_outlier[i] ? result.outliers : result.input_index).push_back(i);
 
-  // the final normalisation, on the kept points only
-  result.centre = hygiene_detail::median_centre(p, result.input_index);
-  result.size_exponent = hygiene_detail::size_exponent(p, result.input_index, result.centre);
+  // the final normalization, on the kept points only
+  result.center = hygiene_detail::median_center(p, result.input_index);
+  result.size_exponent = hygiene_detail::size_exponent(p, result.input_index, result.center);
   result.points.reserve(result.input_index.size());
   for(std::size_t i : result.input_index)
     result.points.push_back(result.to_normalized(p[i]));

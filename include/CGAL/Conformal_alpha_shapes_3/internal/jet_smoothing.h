@@ -105,10 +105,10 @@ inline bool quadratic_jet_shift(const Eigen::Vector3d* offsets, std::size_t coun
 }
 
 // One pass of degree-2 jet smoothing: `smoothed[i]` is `points[i]` (which
-// must be distinct) moved onto the jet fitted to its `k` nearest neighbours
+// must be distinct) moved onto the jet fitted to its `k` nearest neighbors
 // and itself (CGAL's convention: `k + 1` points), or left in place when that
 // fit is degenerate. Each result depends only on `points`: the parallel
-// run (with TBB) gives the serial run's result bit for bit. Neighbours from a
+// run (with TBB) gives the serial run's result bit for bit. Neighbors from a
 // kd-tree (`Orthogonal_k_neighbor_search`); the points should be in a
 // spatial order (queries in that order hit the cache).
 template <class ConcurrencyTag, class Point>

@@ -4,8 +4,10 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ORIENT_SURFACE_PARTS_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ORIENT_SURFACE_PARTS_H
 
-#include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/soup_sheets.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/triangle_soup.h>
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -26,12 +28,14 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
+// How the sheets of a surface are oriented (the manual, "Orientation").
+
 // With reference normals (a scanner's): cuts the soup where the side that
 // the reference normals ask for changes inside a part, as where the front
 // folded one sheet over both faces of a thin wall or over clutter seen from
 // two sides. Each triangle asks for the side most of its corners' reference
 // normals are on; the regions of triangles asking alike (a region smaller
-// than `smallest_region` triangles takes its neighbours' side, so that a few
+// than `smallest_region` triangles takes its neighbors' side, so that a few
 // grazing normals do not cut) become parts of their own: the links between
 // regions are removed and a vertex shared by regions gets one copy per
 // region. `point(s)` gives the position of soup vertex `s`, `reference(s)`
@@ -82,15 +86,15 @@ void cut_at_reference_folds(Advancing_front_soup& soup, const PointOf& point, co
   std::vector<std::size_t> size(n, 0);
   for(std::size_t t = 0; t < n; ++t)
     ++size[region[t]];
-  std::vector<int> neighbours_side(n, 0);
+  std::vector<int> neighbors_side(n, 0);
   for(std::size_t t = 0; t < n; ++t)
     if(size[region[t]] < smallest_region)
       for(std::size_t u : soup.neighbors[t])
         if(u != none && region[u] != region[t] && size[region[u]] >= smallest_region)
-          neighbours_side[region[t]] += side[u];
+          neighbors_side[region[t]] += side[u];
   for(std::size_t t = 0; t < n; ++t)
-    if(size[region[t]] < smallest_region && neighbours_side[region[t]] != 0)
-      side[t] = neighbours_side[region[t]] > 0 ? 1 : -1;
+    if(size[region[t]] < smallest_region && neighbors_side[region[t]] != 0)
+      side[t] = neighbors_side[region[t]] > 0 ? 1 : -1;
   label_regions();
 
   // cut between regions
@@ -115,156 +119,11 @@ void cut_at_reference_folds(Advancing_front_soup& soup, const PointOf& point, co
   }
 }
 
-// The parts of a soup: the classes of triangles connected across edges.
-struct Soup_parts
-{
-  std::vector<std::size_t> part_of_triangle;
-  std::size_t number_of_parts = 0;
-  std::size_t size() const { return number_of_parts; }
-};
-
-inline Soup_parts soup_parts(const Advancing_front_soup& soup)
-{
-  Soup_parts parts;
-  const std::size_t none = std::size_t(-1);
-  parts.part_of_triangle.assign(soup.triangles.size(), none);
-  std::vector<std::size_t> stack;
-  for(std::size_t seed = 0; seed < soup.triangles.size(); ++seed)
-  {
-    if(parts.part_of_triangle[seed] != none)
-      continue;
-    const std::size_t part = parts.number_of_parts++;
-    parts.part_of_triangle[seed] = part;
-    stack.push_back(seed);
-    while(!stack.empty())
-    {
-      const std::size_t t = stack.back();
-      stack.pop_back();
-      for(std::size_t n : soup.neighbors[t])
-      {
-        if(n != Advancing_front_soup::no_neighbor && parts.part_of_triangle[n] == none)
-        {
-          parts.part_of_triangle[n] = part;
-          stack.push_back(n);
-        }
-      }
-    }
-  }
-  return parts;
-}
-
-// Union-find over elements (parts, sheets) that also keeps whether each
-// element is reversed relative to the root of its class.
-struct Parity_union_find
-{
-  std::vector<std::size_t> root;
-  std::vector<char> flip;
-
-  explicit Parity_union_find(std::size_t n) : root(n), flip(n, 0)
-  {
-    std::iota(root.begin(), root.end(), std::size_t(0));
-  }
-
-  // (root, reversed relative to it)
-  std::pair<std::size_t, char> find(std::size_t x) const
-  {
-    char f = 0;
-    while(root[x] != x) { f ^= flip[x]; x = root[x]; }
-    return std::make_pair(x, f);
-  }
-
-  // puts `x` and `y` in one class, `y` reversed relative to `x` when
-  // `reversed`; nothing when they already are in one class
-  void join(std::size_t x, std::size_t y, bool reversed)
-  {
-    const std::pair<std::size_t, char> a = find(x), b = find(y);
-    if(a.first == b.first)
-      return;
-    root[b.first] = a.first;
-    flip[b.first] = char(a.second ^ b.second ^ (reversed ? 1 : 0));
-  }
-};
-
-// Parts that meet along border edges (the front grew them from different
-// seeds) are one sheet of the sampled surface: they are oriented alike, each
-// edge shared by two parts being passed in opposite directions. Each part is
-// joined to its sheet across the part it shares most edges with, in order
-// of decreasing counts, so that a few contradicting edges are outvoted.
-struct Soup_sheets
-{
-  std::vector<std::size_t> sheet_of_part;
-  std::vector<char> reverse_in_sheet;  // by part: against its sheet's first part
-  std::vector<char> closed;            // by sheet: every border edge shared
-  std::size_t size() const { return closed.size(); }
-};
-
-inline Soup_sheets soup_sheets(const Advancing_front_soup& soup, const Soup_parts& parts)
-{
-  // border edges as (smaller shape vertex, larger one, part, same direction)
-  struct Border_edge { std::size_t u, v, part; bool forward; };
-  std::vector<Border_edge> edges;
-  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
-    for(int k = 0; k < 3; ++k)
-      if(soup.neighbors[t][k] == Advancing_front_soup::no_neighbor)
-      {
-        const std::size_t a = soup.shape_vertex[soup.triangles[t][(k + 1) % 3]];
-        const std::size_t b = soup.shape_vertex[soup.triangles[t][(k + 2) % 3]];
-        edges.push_back(Border_edge{(std::min)(a, b), (std::max)(a, b), parts.part_of_triangle[t], a < b});
-      }
-  std::sort(edges.begin(), edges.end(), [](const Border_edge& x, const Border_edge& y) {
-    return std::tie(x.u, x.v, x.part) < std::tie(y.u, y.v, y.part);
-  });
-
-  // votes between two parts: (parts, reversed relative to each other) -> count
-  std::map<std::tuple<std::size_t, std::size_t, bool>, std::size_t> votes;
-  std::vector<char> part_has_unshared(parts.size(), 0);
-  for(std::size_t i = 0; i < edges.size();)
-  {
-    std::size_t j = i + 1;
-    while(j < edges.size() && edges[j].u == edges[i].u && edges[j].v == edges[i].v)
-      ++j;
-    if(j - i == 2 && edges[i].part != edges[i + 1].part)
-      ++votes[std::make_tuple(edges[i].part, edges[i + 1].part, edges[i].forward == edges[i + 1].forward)];
-    else
-      for(std::size_t k = i; k < j; ++k)
-        part_has_unshared[edges[k].part] = 1;
-    i = j;
-  }
-  std::vector<std::pair<std::size_t, std::tuple<std::size_t, std::size_t, bool> > > links;
-  for(const auto& vote : votes)
-    links.emplace_back(vote.second, vote.first);
-  std::sort(links.begin(), links.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-
-  Parity_union_find classes(parts.size());
-  for(const auto& link : links)
-    classes.join(std::get<0>(link.second), std::get<1>(link.second), std::get<2>(link.second));
-
-  Soup_sheets sheets;
-  const std::size_t none = std::size_t(-1);
-  std::vector<std::size_t> sheet_of_root(parts.size(), none);
-  sheets.sheet_of_part.resize(parts.size());
-  sheets.reverse_in_sheet.resize(parts.size());
-  for(std::size_t p = 0; p < parts.size(); ++p)
-  {
-    const std::pair<std::size_t, char> r = classes.find(p);
-    if(sheet_of_root[r.first] == none)
-    {
-      sheet_of_root[r.first] = sheets.closed.size();
-      sheets.closed.push_back(1);
-    }
-    sheets.sheet_of_part[p] = sheet_of_root[r.first];
-    sheets.reverse_in_sheet[p] = r.second;
-    if(part_has_unshared[p])
-      sheets.closed[sheets.sheet_of_part[p]] = 0;
-  }
-  return sheets;
-}
-
 // Open sheets that continue each other across a gap that the front did not
 // bridge (a strip the scan missed, a step whose riser it did not sample) are
 // oriented alike, as the parts of one sheet are. Each border vertex of an
 // open sheet looks for the nearest border vertex of another open sheet
-// among its `neighbours` nearest border vertices; it votes for the two
+// among its `neighbors` nearest border vertices; it votes for the two
 // sheets to face alike (their normals there to agree) when that vertex is
 // within `gap` times its local spacing (the mean length of its edges), the
 // gap lies within 45 degrees of both vertices' tangent planes, and their
@@ -303,7 +162,7 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
   typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
   typedef typename Search::Tree Tree;
   const double gap = 8, cos_45 = 0.7071;
-  const unsigned int neighbours = 24;
+  const unsigned int neighbors = 24;
   const std::size_t fewest_votes = 3, none = Advancing_front_soup::no_neighbor;
 
   // normals (as oriented in their sheet), local spacings and border vertices
@@ -350,7 +209,7 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
     const typename Search::Distance distance(position_map);
     for(std::size_t u : border)
     {
-      const Search search(tree, position[u], neighbours, 0, true, distance);
+      const Search search(tree, position[u], neighbors, 0, true, distance);
       for(const auto& found : search)
       {
         const std::size_t w = found.first;
@@ -406,10 +265,10 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
 // - with reference normals (a scanner's), each part (cut at the folds, see
 //   `cut_at_reference_folds()`) agrees with the majority of the reference
 //   normals at its vertices;
-// - without, the cone that the sheet spans from the centre of the surface's
+// - without, the cone that the sheet spans from the center of the surface's
 //   vertices has positive volume: for a closed sheet that is the volume it
-//   encloses, wherever the centre, so it points outwards; an open sheet
-//   points away from the centre (outwards, for a single view of a convex
+//   encloses, wherever the center, so it points outwards; an open sheet
+//   points away from the center (outwards, for a single view of a convex
 //   object or a building's facades), together with the open sheets it
 //   continues across gaps (`groups`, see `join_open_sheets_across_gaps()`):
 //   the cones of a group are summed.
@@ -426,19 +285,19 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
   };
   auto group_of_part = [&](std::size_t part) { return groups.group_of_sheet[sheets.sheet_of_part[part]]; };
   std::vector<double> vote(has_reference ? parts.size() : groups.number_of_groups, 0.0);
-  // the centre of the soup's vertices: the apex of the cones
-  Vector centre(0, 0, 0);
+  // the center of the soup's vertices: the apex of the cones
+  Vector center(0, 0, 0);
   for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
-    centre = centre + (point(s) - CGAL::ORIGIN);
+    center = center + (point(s) - CGAL::ORIGIN);
   if(!soup.shape_vertex.empty())
-    centre = centre / double(soup.shape_vertex.size());
+    center = center / double(soup.shape_vertex.size());
 
   for(std::size_t t = 0; t < soup.triangles.size(); ++t)
   {
     const std::array<std::size_t, 3>& tri = soup.triangles[t];
-    const Vector p0 = point(tri[0]) - CGAL::ORIGIN - centre;
-    const Vector p1 = point(tri[1]) - CGAL::ORIGIN - centre;
-    const Vector p2 = point(tri[2]) - CGAL::ORIGIN - centre;
+    const Vector p0 = point(tri[0]) - CGAL::ORIGIN - center;
+    const Vector p1 = point(tri[1]) - CGAL::ORIGIN - center;
+    const Vector p2 = point(tri[2]) - CGAL::ORIGIN - center;
     const Vector area_normal = CGAL::cross_product(p1 - p0, p2 - p0);
     const std::size_t part = parts.part_of_triangle[t];
     if(has_reference)

@@ -4,7 +4,7 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SURFACE_NEIGHBORHOODS_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SURFACE_NEIGHBORHOODS_H
 
-// The neighbourhoods of the curvature fits, searched on a flat copy of the
+// The neighborhoods of the curvature fits, searched on a flat copy of the
 // mesh's vertex graph: positions and adjacency in arrays indexed by vertex
 // index, so that the searches, run once per vertex and possibly on several
 // threads, touch contiguous memory and nothing of the mesh.
@@ -24,7 +24,7 @@ namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
 // The vertex graph of a mesh: for vertex index v, its position and its
-// neighbours' indices adjacent[first[v], first[v + 1]).
+// neighbors' indices adjacent[first[v], first[v + 1]).
 struct Vertex_graph
 {
   std::vector<Vec3> points;
@@ -67,7 +67,7 @@ Vertex_graph vertex_graph(const PolygonMesh& pmesh, const VPM& vpm, const Vertex
 // The part of the vertex graph that the searches around v can reach: the
 // vertices fewer than `rings` edges away and those within distance
 // `radius` of v that the others lead to, with their adjacency, and their other
-// neighbours without. v has index 0; `by_index` receives the vertices.
+// neighbors without. v has index 0; `by_index` receives the vertices.
 template <typename PolygonMesh, typename VPM>
 Vertex_graph local_vertex_graph(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                                 const PolygonMesh& pmesh, const VPM& vpm, std::size_t rings, double radius,
@@ -103,8 +103,8 @@ Vertex_graph local_vertex_graph(typename boost::graph_traits<PolygonMesh>::verte
 
 // The vertices around a vertex v, each with a level: the smallest index j
 // such that it is connected to v by surface edges inside the j-th of
-// nested neighbourhoods (balls of increasing radii, or rings of increasing
-// size), so that the j-th neighbourhood is every vertex of level <= j.
+// nested neighborhoods (balls of increasing radii, or rings of increasing
+// size), so that the j-th neighborhood is every vertex of level <= j.
 // A search reuses its buffers from vertex to vertex; one per thread.
 class Nested_neighborhood_search
 {
@@ -112,7 +112,7 @@ public:
   explicit Nested_neighborhood_search(std::size_t number_of_vertices) : m_stamp(number_of_vertices, 0) {}
 
   // The vertices found (v excluded), by increasing level, and where each
-  // level's neighbourhood ends: vertices()[0, end(j)) is the j-th.
+  // level's neighborhood ends: vertices()[0, end(j)) is the j-th.
   const std::vector<std::size_t>& vertices() const { return m_found; }
   const std::vector<double>& distances() const { return m_distance; }
   std::size_t end(std::size_t level) const { return m_end[level]; }

@@ -5,7 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_TRIANGLE_SOUP_H
 
 // The surface as the advancing front leaves it (advancing_front_facets.h),
-// a soup of triangles with their neighbours, and what is done to it before
+// a soup of triangles with their neighbors, and what is done to it before
 // it becomes a mesh: a canonical order, and the cut at a scale.
 
 #include <algorithm>
@@ -21,7 +21,7 @@ namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
 // A surface as triangles over vertices of a conformal alpha shape, with
-// each triangle's neighbours and conformal value.
+// each triangle's neighbors and conformal value.
 struct Advancing_front_soup
 {
   // vertex of the shape (its `vertex_index()`) of each soup vertex; a shape
@@ -29,7 +29,7 @@ struct Advancing_front_soup
   std::vector<std::size_t> shape_vertex;
   // triangles over soup vertices, consistently oriented in each part
   std::vector<std::array<std::size_t, 3> > triangles;
-  // for each triangle, its three neighbours across the edges opposite to its
+  // for each triangle, its three neighbors across the edges opposite to its
   // vertices (an index into `triangles`), or `no_neighbor` on a border
   std::vector<std::array<std::size_t, 3> > neighbors;
   // the conformal value of each triangle's facet
@@ -71,7 +71,7 @@ inline void put_in_canonical_order(Advancing_front_soup& soup)
   }
 
   // triangles renumbered and rotated to start at their smallest vertex,
-  // with their neighbours (opposite to each vertex) rotated alike
+  // with their neighbors (opposite to each vertex) rotated alike
   std::vector<std::array<std::size_t, 3> > triangles(nt), neighbors(nt);
   for(std::size_t t = 0; t < nt; ++t)
   {
@@ -111,7 +111,7 @@ inline void put_in_canonical_order(Advancing_front_soup& soup)
 }
 
 // The soup at scale `a` cut from the soup grown with no bound: the
-// triangles whose value exceeds `a` are removed and their neighbours get a
+// triangles whose value exceeds `a` are removed and their neighbors get a
 // border there; a vertex whose triangles fall apart into several fans gets
 // one copy per fan (as where the front met itself), so that each soup vertex
 // keeps one umbrella; the parts left with fewer than 8 triangles are
