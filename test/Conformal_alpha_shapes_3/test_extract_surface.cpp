@@ -93,6 +93,14 @@ std::vector<Point> read(const std::string& file)
   return pts;
 }
 
+// Under the sanitizers (several times slower), most solid-boundary tests run
+// on smaller samples: the same properties, a third of the work.
+#ifdef CAS3_SANITIZED
+const std::size_t closed_points = 8000, noisy_points = 15000;
+#else
+const std::size_t closed_points = 20000, noisy_points = 50000;
+#endif
+
 bool shared_data_available()
 {
   return bool(std::ifstream(std::string(CAS3_SHARED_DATA) + "/kitten.xyz"));
@@ -108,11 +116,11 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mes
   const double a = 1.0, b = 0.7, c = 0.4, R = 1.0, r = 0.35;
   const double ellipsoid_volume = 4.0 / 3.0 * M_PI * a * b * c, torus_volume = 2 * M_PI * M_PI * R * r * r;
   const std::vector<Case> cases = {
-    {"ellipsoid", cas3_test::ellipsoid_sample<Point>(20000, a, b, c), 2, ellipsoid_volume},
-    {"torus", cas3_test::torus_sample<Point>(20000, R, r), 0, torus_volume},
-    {"ellipsoid, 30x density gradient", cas3_test::graded_ellipsoid_sample<Point>(20000, a, b, c, 30), 2,
+    {"ellipsoid", cas3_test::ellipsoid_sample<Point>(closed_points, a, b, c), 2, ellipsoid_volume},
+    {"torus", cas3_test::torus_sample<Point>(closed_points, R, r), 0, torus_volume},
+    {"ellipsoid, 30x density gradient", cas3_test::graded_ellipsoid_sample<Point>(closed_points, a, b, c, 30), 2,
      ellipsoid_volume},
-    {"torus, 30x density gradient", cas3_test::torus_sample<Point>(20000, R, r, 0, 2, 30), 0, torus_volume},
+    {"torus, 30x density gradient", cas3_test::torus_sample<Point>(closed_points, R, r, 0, 2, 30), 0, torus_volume},
   };
   for(const Case& k : cases)
   {
@@ -128,7 +136,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mes
     BOOST_TEST(s.volume == k.volume, boost::test_tools::tolerance(0.03));
   }
   // a torus whose density follows a 7x range of feature size (see below)
-  const auto pts = cas3_test::lfs_torus_sample<Point>(20000, 1.0, 0.8);
+  const auto pts = cas3_test::lfs_torus_sample<Point>(closed_points, 1.0, 0.8);
   const Cas cas(pts.begin(), pts.end());
   const Surface_facts s = extract<Mesh>(cas, CAS3::suggest_alpha(cas), pts);
   BOOST_TEST(s.valid_closed_triangle_mesh);
@@ -145,7 +153,7 @@ BOOST_AUTO_TEST_CASE(noisy_samples_stay_manifold)
   for(double noise : {1e-4, 1e-3})
     for(CAS3::Local_scale_estimator estimator : {CAS3::PAPER_POLE_DISTANCE, CAS3::NOISE_ROBUST_POLE_DISTANCE})
     {
-      const auto pts = cas3_test::ellipsoid_sample<Point>(50000, 1.0, 0.7, 0.4, noise);
+      const auto pts = cas3_test::ellipsoid_sample<Point>(noisy_points, 1.0, 0.7, 0.4, noise);
       const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_scale_estimator(estimator));
       const Surface_facts s = extract<Surface_mesh>(cas, CAS3::suggest_alpha(cas), pts);
       BOOST_TEST_MESSAGE("noise " << noise << " estimator " << int(estimator) << ": "
@@ -161,7 +169,8 @@ BOOST_AUTO_TEST_CASE(noisy_samples_stay_manifold)
 BOOST_AUTO_TEST_CASE(noise_robust_scales_do_not_collapse)
 {
   // 0.1% radial noise on 200k points is far above the sagitta: the paper's
-  // pole distances of inward-displaced points collapse
+  // pole distances of inward-displaced points collapse (not at 60k points:
+  // this test keeps its size under the sanitizers)
   const auto clean = cas3_test::ellipsoid_sample<Point>(200000, 1.0, 0.7, 0.4);
   const auto noisy = cas3_test::ellipsoid_sample<Point>(200000, 1.0, 0.7, 0.4, 1e-3);
   auto fifth_percentile = [](const Cas& cas) {
@@ -209,15 +218,15 @@ BOOST_AUTO_TEST_CASE(conformal_scales_succeed_where_every_global_alpha_fails)
   BOOST_TEST(s.report.fraction_of_points_on_surface() >= 0.99);
 
   // every local scale 1: the ordinary alpha shape, swept over 400 quantiles
-  // (40 under the sanitizers)
-  // of its facet values and around the scale where the solid closes
+  // of its facet values (16 under the sanitizers) and around the scale where
+  // the solid closes
   const std::vector<double> ones(pts.size(), 1.0);
   const Cas global(pts.begin(), pts.end(), CAS3::parameters::local_scales(ones.begin()));
   std::vector<double> values;
   global.boundary_facet_alphas(std::back_inserter(values));
   std::sort(values.begin(), values.end());
 #ifdef CAS3_SANITIZED
-  const std::size_t sweep = 40;  // each extraction takes seconds there
+  const std::size_t sweep = 16;  // each extraction takes seconds there
 #else
   const std::size_t sweep = 400;
 #endif

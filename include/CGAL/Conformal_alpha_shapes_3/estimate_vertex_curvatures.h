@@ -85,7 +85,7 @@ struct Curvature_maps
 
   Curvature_maps(const NamedParameters& np)
     : normal(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_normal_map),
-                                          Default_normal_map())),
+                                          Default_normal_map(CGAL::NULL_VECTOR))),
       mean(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_mean_curvature_map),
                                         Default_scalar_map())),
       gaussian(CGAL::parameters::choose_parameter(
