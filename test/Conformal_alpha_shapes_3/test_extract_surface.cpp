@@ -108,6 +108,10 @@ bool shared_data_available()
 
 } // namespace
 
+// Two suites, which ctest runs as two tests side by side: the paper's
+// solid-boundary extraction, and the advancing front with the pipeline.
+BOOST_AUTO_TEST_SUITE(solid_boundary)
+
 // Noiseless samples: at the suggested scale, one closed outward manifold of
 // the right genus through every point, enclosing the analytic volume.
 BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mesh, Mesh_types)
@@ -324,6 +328,8 @@ BOOST_AUTO_TEST_CASE(degenerate_scales_and_shapes)
   BOOST_TEST(PMP::volume(four) == 1.0 / 6.0, boost::test_tools::tolerance(1e-12));
 }
 
+BOOST_AUTO_TEST_SUITE_END()
+
 // ---------------------------------------------------------------------------
 // extract_surface, suggest_scale and the pipeline's noise handling
 
@@ -377,6 +383,8 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
 }
 
 } // namespace
+
+BOOST_AUTO_TEST_SUITE(advancing_front)
 
 // Every vertex of the advancing-front surface is its input point, the mesh
 // is a valid oriented manifold, and on clean closed samples nearly every
@@ -737,3 +745,5 @@ BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
   BOOST_TEST(radius[1] <= radius[2]);
   BOOST_TEST(radius[0] < radius[2]);
 }
+
+BOOST_AUTO_TEST_SUITE_END()
