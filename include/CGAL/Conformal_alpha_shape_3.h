@@ -351,6 +351,11 @@ public:
   FT ordinary_alpha(Cell_handle c, int i) const
   {
     const Cell_handle n = c->neighbor(i);
+    // a hull facet is measured from its finite cell, in the vertex order
+    // that constructions_are_defined() checked (from the infinite cell the
+    // kernel's determinant can be 0 in double where the checked one is not)
+    if(this->is_infinite(c))
+      return ordinary_alpha(n, n->index(c));
     if(c->encroaches_facet(i) || n->encroaches_facet(n->index(c)))
       return (std::min)(c->alpha(), n->alpha());
     const FT radius = std::sqrt(this->geom_traits().compute_squared_radius_3_object()(
