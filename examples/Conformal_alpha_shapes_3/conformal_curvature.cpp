@@ -76,7 +76,7 @@ const char* const usage =
   "nz_L H_L K_L k1_L k2_L d1x_L .. d2z_L radius_L distance_L source_L, where\n"
   "source 0 = the point's own surface vertex, 1 = the nearest surface point,\n"
   "2 = no value) and DIR/surface_<scale>.ply per scale.\n"
-  "The points are recenterd and rescaled before the work (results are in the\n"
+  "The points are recentered and rescaled before the work (results are in the\n"
   "input's units); isolated far outliers are left out and get outlier = 1.\n"
   "A failed run exits with status 1 and one line on stderr, and leaves DIR\n"
   "as it was.\n";

@@ -427,3 +427,44 @@ BOOST_AUTO_TEST_CASE(single_vertex_matches_the_whole_mesh_with_radii)
   check(CAS3::parameters::neighborhood_radius(0.1));
   check(CAS3::parameters::neighborhood_radii(radii));
 }
+
+// Large radii (at least 10.5 median edge lengths) are fitted at centers and
+// interpolated to the vertices: on a torus, whose curvature varies along
+// the tube, the whole mesh's values stay close to each vertex's own fit
+// (the one-vertex estimate fits at the vertex itself) and to the truth, and
+// the parallel run gives the same bits.
+BOOST_AUTO_TEST_CASE(large_radii_from_centers_follow_the_own_fits)
+{
+  const double R = 1.0, r = 0.35;
+  Surface_mesh mesh;
+  cas3_test::parametric_grid<Surface_mesh, Point>(300, 120, true, true, 0.25, [&](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+  }, mesh);
+  const double radius = 0.3;  // about 12 median edge lengths
+  const auto np = CAS3::parameters::neighborhood_radius(radius);
+  auto h_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  CAS3::estimate_vertex_curvatures(mesh, CAS3::parameters::vertex_mean_curvature_map(h_map, np));
+  std::vector<double> to_own, to_truth, own_to_truth;
+  auto h_one = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : mesh.vertices())
+  {
+    if(v.idx() % 37 != 0)
+      continue;
+    BOOST_TEST(CAS3::estimate_vertex_curvatures(v, mesh, CAS3::parameters::vertex_mean_curvature_map(h_one, np)));
+    const Point& p = mesh.point(v);
+    const double tube = std::atan2(p.z(), std::sqrt(p.x() * p.x() + p.y() * p.y()) - R);
+    const double H = (1 / r + std::cos(tube) / (R + r * std::cos(tube))) / 2;
+    to_own.push_back(std::abs(get(h_map, v) - get(h_one, v)) / H);
+    to_truth.push_back(std::abs(get(h_map, v) - H) / H);
+    own_to_truth.push_back(std::abs(get(h_one, v) - H) / H);
+  }
+  BOOST_TEST_MESSAGE("relative H difference to the own fit: median " << quantile(to_own, 0.5) << ", p90 "
+                     << quantile(to_own, 0.9) << "; error: " << quantile(to_truth, 0.5) << " (own fit "
+                     << quantile(own_to_truth, 0.5) << ")");
+  BOOST_TEST(quantile(to_own, 0.5) < 0.01);
+  BOOST_TEST(quantile(to_own, 0.9) < 0.03);
+  BOOST_TEST(quantile(to_truth, 0.5) < 1.2 * quantile(own_to_truth, 0.5) + 0.002);
+  BOOST_TEST(same_bits(all_outputs<CGAL::Sequential_tag>(mesh, np),
+                       all_outputs<CGAL::Parallel_if_available_tag>(mesh, np)));
+}

@@ -165,6 +165,15 @@ Neighborhood, by the first of these named parameters given:
   and connected to it through surface edges inside that ball (a ball cut to
   the vertex's side of the surface: a thin part or a nearby sheet does not
   leak into the fit). Widened by 1.5 up to twice when too small.
+- Large radii (candidates too), of at least 10.5 median edge lengths, with
+  `QUADRIC_FIT`: such a ball holds about 350 vertices or more, and its fit
+  changes little from one vertex to the next, so it is fitted at centers
+  more than a sixth of the smallest large radius apart (every vertex within
+  that distance of one) and carried to each vertex by a weighted linear
+  least-squares fit in the vertex's tangent plane over its center and the
+  adjacent ones (exact where the curvature varies linearly; the shape
+  operators are interpolated as tensors, the normals as vectors), at a
+  fraction of the cost of a fit at every vertex (manual, "Neighborhoods").
 - `ring_size`: the `k`-ring of the vertex; up to two more rings are used when
   it is too small.
 
@@ -284,7 +293,9 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
 /*!
 \ingroup PkgConformalAlphaShapes3Curvature
 The same estimate at the single vertex `v`, written into the maps passed in
-`np` at `v` only. Its cost is that of the vertex's neighborhood.
+`np` at `v` only. Its cost is that of the vertex's neighborhood. Large
+radii are fitted at `v` itself, not interpolated from centers: for them
+the value differs slightly from the whole mesh's.
 \returns whether the curvature at `v` is defined.
 */
 template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -308,7 +319,7 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   std::vector<internal::Vec3> normals(graph.size());
   for(std::size_t i = 0; i < graph.size(); ++i)
     normals[i] = internal::chen_wu_normal(by_index[i], pmesh, vpm);
-  const internal::Curvature_estimation estimation(graph, normals, rules, estimator);
+  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, false);
   internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
   internal::Vertex_estimate estimate;
   estimation.estimate(0, workspace, &estimate);

@@ -14,6 +14,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/curvature_estimator.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/automatic_radius.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/fit_centers.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_neighborhoods.h>
 
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -94,7 +96,18 @@ struct Vertex_estimate
 // rings found by another, and each fit runs on a prefix of what the search
 // found. A neighborhood too small or too degenerate for the fit is widened
 // (two more rings, or the radius by 1.5 twice) before the vertex is given
-// up (NaN).
+// up (NaN). Radii of at least `large_radius_in_edges` median edge lengths
+// are fitted at centers a sixth of the smallest such radius apart and
+// interpolated to the other vertices (internal/fit_centers.h);
+// `fit_at_centers()` runs those fits, before the vertices are estimated.
+// A sixth: the interpolation is exact for curvature that varies linearly,
+// and its error on curvature that varies at the fit's own scale falls with
+// the square of the centers' spacing (at a quarter, a bumpy sphere's H
+// at a radius of 13 edges moved by 2% of H); 10.5 edge lengths, so that
+// centers are at least 1.75 edges apart, a fifth of the vertices.
+constexpr double large_radius_in_edges = 10.5;
+constexpr double large_radius_per_center_spacing = 6;
+
 class Curvature_estimation
 {
 public:
@@ -110,11 +123,15 @@ public:
     std::vector<char> fitted;
     std::vector<Quadric_fit_error> errors;
     std::vector<Candidate_fit> candidates;
+    std::vector<std::pair<const Center_fit*, Vec3> > around;  // centers around the vertex
   };
 
-  // `normals`: the Chen-Wu normal of each vertex of `graph`.
+  // `normals`: the Chen-Wu normal of each vertex of `graph`. With
+  // `at_centers` false every radius is fitted at every vertex (the
+  // estimate at one vertex, whose graph is only what its search reaches).
   Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
-                       const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator)
+                       const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
+                       bool at_centers = true)
     : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator)
   {
     for(const Neighborhood_rule& rule : rules)
@@ -132,6 +149,52 @@ public:
     for(const Neighborhood_rule& rule : rules)
       for(double r : rule.candidates)
         m_with_error[radius_level(r)] = 1;
+
+    m_fine_levels = m_radii.size();
+    const double edge = at_centers ? median_edge_length(graph) : 0.;
+    if(estimator == QUADRIC_FIT && edge > 0)
+    {
+      m_fine_levels = radius_level(large_radius_in_edges * edge);
+      if(m_fine_levels < m_radii.size())
+      {
+        const double spacing = m_radii[m_fine_levels] / large_radius_per_center_spacing;
+        m_centers = std::make_shared<const Fit_centers>(graph, spacing);
+        // the centers around a vertex: its own, within `spacing`, and
+        // those adjacent to it, within about twice that, which weigh
+        // little beyond `spacing` (less smoothing)
+        m_center_reach = 1.5 * spacing;
+      }
+    }
+    m_fine_radii.assign(m_radii.begin(), m_radii.begin() + std::ptrdiff_t(m_fine_levels));
+  }
+
+  // The fits at the large radii at every center; serial or parallel as
+  // the tag says, with the same results.
+  template <typename ConcurrencyTag>
+  void fit_at_centers()
+  {
+    if(!m_centers)
+      return;
+    const std::size_t large = m_radii.size() - m_fine_levels;
+    const std::vector<double> radii(m_radii.begin() + std::ptrdiff_t(m_fine_levels), m_radii.end());
+    m_center_fits.assign(m_centers->size() * large, Center_fit());
+    for_each_index<ConcurrencyTag>(m_centers->size(), [&]() { return make_workspace(); },
+      [&](std::size_t c, Workspace& ws) {
+        const std::size_t v = m_centers->vertex[c];
+        if(!std::isfinite(m_normals[v].x()))
+          return;
+        const Tangent_frame f = frame_from_normal(m_normals[v]);
+        std::vector<Level_end> ends;
+        ws.search.balls(m_graph, v, radii);
+        prepare(v, f, radii.back(), large, ws, ends);
+        for(std::size_t j = 0; j < large; ++j)
+        {
+          Local_curvature curvature;
+          Quadric_fit_error error;
+          if(fit(f, ends[j], radii[j], radii.back(), ws, curvature, &error))
+            m_center_fits[c * large + j].set(curvature, error);
+        }
+      });
   }
 
   Workspace make_workspace() const { return Workspace(m_graph.size()); }
@@ -174,7 +237,7 @@ private:
   {
     const Vec3& p = m_graph.points[v];
     const std::vector<std::size_t>& found = ws.search.vertices();
-    const std::vector<double>& distance = ws.search.distances();
+    const std::vector<double>& squared_distance = ws.search.squared_distances();
     const double squared_length = length * length;
     ws.shells.clear();
     ws.neighbors.clear();
@@ -189,12 +252,12 @@ private:
         ends[level] = end;
         ws.shell_of.fill(-1);  // a level's shells are its own
       }
-      if(!(distance[k] > 0))
+      const double d2 = squared_distance[k];
+      if(!(d2 > 0))
         continue;
       const Vec3 offset = m_graph.points[found[k]] - p;
       if(m_estimator == QUADRIC_FIT)
       {
-        const double d2 = distance[k] * distance[k];
         int& shell = ws.shell_of[std::size_t(quadric_shell_index(d2, squared_length))];
         if(shell < 0)
         {
@@ -234,18 +297,43 @@ private:
     return ok && std::isfinite(out.k1) && std::isfinite(out.k2);
   }
 
+  // The fits at the large radii interpolated from the centers around v.
+  void interpolate_large_radii(std::size_t v, Workspace& ws) const
+  {
+    const std::size_t large = m_radii.size() - m_fine_levels;
+    const std::size_t own = m_centers->center_of[v];
+    for(std::size_t j = 0; j < large; ++j)
+    {
+      ws.around.clear();
+      ws.around.emplace_back(&m_center_fits[own * large + j], m_graph.points[m_centers->vertex[own]]);
+      for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
+      {
+        const std::size_t c = m_centers->adjacent[e];
+        ws.around.emplace_back(&m_center_fits[c * large + j], m_graph.points[m_centers->vertex[c]]);
+      }
+      const std::size_t level = m_fine_levels + j;
+      ws.fitted[level] = interpolate_center_fits(m_graph.points[v], m_normals[v], ws.around, m_center_reach,
+                                                 ws.fits[level], ws.errors[level]);
+    }
+  }
+
   void estimate_in_balls(std::size_t v, Workspace& ws, Vertex_estimate* out) const
   {
     const Tangent_frame f = frame_from_normal(m_normals[v]);
-    const double length = m_radii.back();
     std::vector<Level_end> ends;
-    ws.search.balls(m_graph, v, m_radii);
-    prepare(v, f, length, m_radii.size(), ws, ends);
     ws.fits.resize(m_radii.size());
     ws.errors.resize(m_radii.size());
     ws.fitted.assign(m_radii.size(), 0);
-    for(std::size_t j = 0; j < m_radii.size(); ++j)
-      ws.fitted[j] = fit(f, ends[j], m_radii[j], length, ws, ws.fits[j], m_with_error[j] ? &ws.errors[j] : nullptr);
+    if(m_fine_levels > 0)
+    {
+      const double length = m_fine_radii.back();
+      ws.search.balls(m_graph, v, m_fine_radii);
+      prepare(v, f, length, m_fine_levels, ws, ends);
+      for(std::size_t j = 0; j < m_fine_levels; ++j)
+        ws.fitted[j] = fit(f, ends[j], m_radii[j], length, ws, ws.fits[j], m_with_error[j] ? &ws.errors[j] : nullptr);
+    }
+    if(m_centers)
+      interpolate_large_radii(v, ws);
 
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
@@ -296,10 +384,11 @@ private:
   {
     const Tangent_frame f = frame_from_normal(m_normals[v]);
     ws.search.rings(m_graph, v, m_rings);
-    const std::vector<double>& distance = ws.search.distances();
+    const std::vector<double>& squared_distance = ws.search.squared_distances();
     double length = 0;
-    for(double d : distance)
-      length = (std::max)(length, d);
+    for(double d2 : squared_distance)
+      length = (std::max)(length, d2);
+    length = std::sqrt(length);
     if(!(length > 0))
       return;
     std::vector<Level_end> ends;
@@ -314,7 +403,8 @@ private:
         const std::size_t ring = std::size_t(rule.rings + widening) - 1;
         double reach = 0;
         for(std::size_t k = 0; k < ws.search.end(ring); ++k)
-          reach = (std::max)(reach, distance[k]);
+          reach = (std::max)(reach, squared_distance[k]);
+        reach = std::sqrt(reach);
         Local_curvature c;
         if(fit(f, ends[ring], reach, length, ws, c, nullptr))
           out[r] = Vertex_estimate{c, reach};
@@ -329,6 +419,13 @@ private:
   std::vector<double> m_radii;     // every rule's radii, increasing
   std::vector<char> m_with_error;  // by radius: a candidate of an automatic rule
   std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
+  // radii [0, m_fine_levels) are fitted at every vertex, the others at
+  // the centers
+  std::size_t m_fine_levels = 0;
+  std::vector<double> m_fine_radii;
+  std::shared_ptr<const Fit_centers> m_centers;
+  double m_center_reach = 0;
+  std::vector<Center_fit> m_center_fits;  // by center, then large radius
 };
 
 // Estimates of every rule at every vertex of `graph`: [rule][vertex index].
@@ -338,7 +435,8 @@ std::vector<std::vector<Vertex_estimate> > estimate_at_every_vertex(const Vertex
                                                                    const std::vector<Neighborhood_rule>& rules,
                                                                    Curvature_estimator estimator)
 {
-  const Curvature_estimation estimation(graph, normals, rules, estimator);
+  Curvature_estimation estimation(graph, normals, rules, estimator);
+  estimation.fit_at_centers<ConcurrencyTag>();
   std::vector<std::vector<Vertex_estimate> > by_rule(rules.size(), std::vector<Vertex_estimate>(graph.size()));
   typedef Curvature_estimation::Workspace Workspace;
   struct Per_thread

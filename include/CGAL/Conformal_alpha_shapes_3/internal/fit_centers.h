@@ -1,0 +1,200 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_FIT_CENTERS_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_FIT_CENTERS_H
+
+// Large neighborhoods fitted at a subset of the vertices, the centers, and
+// carried to every vertex by interpolation with linear precision (the
+// manual, "Neighborhoods", large radii). A ball of 16 sample spacings holds
+// about 800 vertices: fitting it at every vertex costs 800 neighbor visits
+// per vertex, while the fitted curvature changes little between vertices a
+// quarter of the radius apart. This header chooses the centers and the
+// weights that carry their values to a vertex.
+
+#include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/surface_neighborhoods.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+namespace internal {
+
+// The median length of the edges of `g`, from at most about 100,000 of
+// them spread over the vertices; 0 without edges.
+inline double median_edge_length(const Vertex_graph& g)
+{
+  std::vector<double> lengths;
+  const std::size_t step = (std::max)(std::size_t(1), g.size() / 20000);
+  for(std::size_t v = 0; v < g.size(); v += step)
+    for(std::size_t e = g.first[v]; e < g.first[v + 1]; ++e)
+      lengths.push_back((g.points[g.adjacent[e]] - g.points[v]).norm());
+  if(lengths.empty())
+    return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2), lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+// Centers more than `spacing` apart such that every vertex is within
+// `spacing` of one, connected to it inside that ball (chosen greedily in
+// vertex order, which follows space: the vertices of the shape come
+// spatially sorted); each vertex belongs to the nearest center that covers
+// it. Two centers are adjacent when an edge joins vertices belonging to
+// them: the centers around a vertex are its own and those adjacent to it.
+struct Fit_centers
+{
+  std::vector<std::size_t> vertex;          // by center: its vertex
+  std::vector<std::uint32_t> center_of;     // by vertex: the center it belongs to
+  std::vector<std::size_t> first, adjacent;  // by center: adjacent centers
+
+  std::size_t size() const { return vertex.size(); }
+
+  Fit_centers(const Vertex_graph& g, double spacing) : center_of(g.size(), unassigned)
+  {
+    std::vector<double> squared_distance(g.size(), std::numeric_limits<double>::infinity());
+    Nested_neighborhood_search search(g.size());
+    const std::vector<double> radius(1, spacing);
+    for(std::size_t v = 0; v < g.size(); ++v)
+    {
+      if(center_of[v] != unassigned)
+        continue;
+      const std::uint32_t c = std::uint32_t(vertex.size());
+      vertex.push_back(v);
+      center_of[v] = c;
+      squared_distance[v] = 0;
+      search.balls(g, v, radius);
+      for(std::size_t k = 0; k < search.vertices().size(); ++k)
+      {
+        const std::size_t w = search.vertices()[k];
+        if(search.squared_distances()[k] < squared_distance[w])
+        {
+          squared_distance[w] = search.squared_distances()[k];
+          center_of[w] = c;
+        }
+      }
+    }
+
+    std::vector<std::pair<std::uint32_t, std::uint32_t> > pairs;
+    for(std::size_t v = 0; v < g.size(); ++v)
+      for(std::size_t e = g.first[v]; e < g.first[v + 1]; ++e)
+        if(center_of[v] != center_of[g.adjacent[e]])
+          pairs.emplace_back(center_of[v], center_of[g.adjacent[e]]);
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    first.assign(vertex.size() + 1, 0);
+    for(const auto& p : pairs)
+      ++first[p.first + 1];
+    for(std::size_t c = 0; c < vertex.size(); ++c)
+      first[c + 1] += first[c];
+    adjacent.reserve(pairs.size());
+    for(const auto& p : pairs)
+      adjacent.push_back(p.second);
+  }
+
+private:
+  static constexpr std::uint32_t unassigned = (std::numeric_limits<std::uint32_t>::max)();
+};
+
+// The fit of one large neighborhood at a center, in the form that
+// interpolates: the shape operator as a symmetric 3D tensor
+// k1 d1 d1' + k2 d2 d2' (no sign ambiguity of the directions), the unit
+// normal, and the fit's uncertainty.
+struct Center_fit
+{
+  Eigen::Matrix3d shape = Eigen::Matrix3d::Zero();
+  Vec3 normal = Vec3::Zero();
+  Quadric_fit_error error;
+  bool defined = false;
+
+  void set(const Local_curvature& c, const Quadric_fit_error& e)
+  {
+    shape = c.k1 * c.d1 * c.d1.transpose() + c.k2 * c.d2 * c.d2.transpose();
+    normal = c.normal;
+    error = e;
+    defined = true;
+  }
+};
+
+// The curvature at a vertex (at p, normal n) from the fits of the centers
+// around it (`around`, each with its position), interpolated by a weighted
+// linear least-squares fit in the vertex's tangent plane: exact for values
+// that vary linearly along the surface, so that the vertex does not take
+// the curvature of a center a quarter of a radius away. With fewer than
+// three defined centers, or centers on a line, the weighted mean. The
+// uncertainty is always the weighted mean (weights that stay positive).
+// `reach` sets the weights (1 - d^2 / reach^2)^2; false when no center
+// around has a defined fit.
+inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
+                                    const std::vector<std::pair<const Center_fit*, Vec3> >& around,
+                                    double reach, Local_curvature& out, Quadric_fit_error& error)
+{
+  const Tangent_frame f = frame_from_normal(n);
+  Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
+  double total = 0;
+  std::size_t count = 0;
+  for(const auto& a : around)
+  {
+    if(!a.first->defined)
+      continue;
+    const Vec3 o = (a.second - p) / reach;
+    const double u = (std::max)(0., 1 - o.squaredNorm());
+    const double w = u * u + 1e-6;  // every center counts a little: none is beyond `reach` by much
+    const Eigen::Vector3d phi(1, o.dot(f.e1), o.dot(f.e2));
+    moments += w * phi * phi.transpose();
+    total += w;
+    ++count;
+  }
+  if(count == 0)
+    return false;
+  // weight of center i in the interpolated value: w_i e0' M^-1 phi_i
+  Eigen::Vector3d solution = Eigen::Vector3d::Zero();
+  bool linear = false;
+  if(count >= 3)
+  {
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(moments);
+    const auto pivots = ldlt.vectorD();
+    linear = ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-6 * pivots.maxCoeff();
+    if(linear)
+      solution = ldlt.solve(Eigen::Vector3d(1, 0, 0));
+  }
+  Eigen::Matrix3d shape = Eigen::Matrix3d::Zero();
+  Vec3 normal = Vec3::Zero();
+  error = Quadric_fit_error();
+  for(const auto& a : around)
+  {
+    if(!a.first->defined)
+      continue;
+    const Vec3 o = (a.second - p) / reach;
+    const double u = (std::max)(0., 1 - o.squaredNorm());
+    const double w = u * u + 1e-6;
+    const double lambda = linear ? w * solution.dot(Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2))) : w / total;
+    shape += lambda * a.first->shape;
+    normal += lambda * a.first->normal;
+    const double mean = w / total;
+    error.mean_curvature += mean * a.first->error.mean_curvature;
+    error.noise += mean * a.first->error.noise;
+    error.degrees_of_freedom += mean * a.first->error.degrees_of_freedom;
+    error.per_noise += mean * a.first->error.per_noise;
+  }
+  if(!(normal.norm() > 0))
+    return false;
+  const Tangent_frame g = frame_from_normal(normal.normalized());
+  const double a = g.e1.dot(shape * g.e1), b = 2 * g.e1.dot(shape * g.e2), c = g.e2.dot(shape * g.e2);
+  out = from_tangent_form(g, a, b, c);
+  return std::isfinite(out.k1) && std::isfinite(out.k2);
+}
+
+} // namespace internal
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_FIT_CENTERS_H
