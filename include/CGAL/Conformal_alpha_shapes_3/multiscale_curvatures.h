@@ -47,7 +47,7 @@ namespace Conformal_alpha_shapes_3 {
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
-Multi-scale curvature of a point cloud: the input is checked, recenterd
+Multi-scale curvature of a point cloud: the input is checked, recentered
 and rescaled, and isolated far outliers are left out (the manual, section
 "Input Rules"); the noise of the points is estimated (`estimate_noise()`)
 and, when it matters, the points are smoothed (`denoise()`); the conformal
@@ -61,7 +61,7 @@ Everything given back is in the input's units and indices: surfaces lie at
 the (smoothed) positions mapped back to input coordinates, radii and
 distances are lengths of the input, curvatures are inverse lengths of the
 input, and values are reported by input index. Only `shape()` is in the
-working frame, the input recenterd and scaled by a power of two, so that
+working frame, the input recentered and scaled by a power of two, so that
 no construction overflows or underflows whatever the input's magnitude.
 
 Surfaces are `Surface_mesh` objects with the vertex properties

@@ -18,6 +18,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_neighborhoods.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -151,8 +152,8 @@ public:
         m_with_error[radius_level(r)] = 1;
 
     m_fine_levels = m_radii.size();
-    const double edge = at_centers ? median_edge_length(graph) : 0.;
-    if(estimator == QUADRIC_FIT && edge > 0)
+    const double edge = at_centers && estimator == QUADRIC_FIT && !m_radii.empty() ? median_edge_length(graph) : 0.;
+    if(edge > 0)
     {
       m_fine_levels = radius_level(large_radius_in_edges * edge);
       if(m_fine_levels < m_radii.size())
@@ -160,8 +161,8 @@ public:
         const double spacing = m_radii[m_fine_levels] / large_radius_per_center_spacing;
         m_centers = std::make_shared<const Fit_centers>(graph, spacing);
         // the centers around a vertex: its own, within `spacing`, and
-        // those adjacent to it, within about twice that, which weigh
-        // little beyond `spacing` (less smoothing)
+        // those adjacent to it, up to about three times that; the weights
+        // fade at 1.5 times `spacing` (less smoothing)
         m_center_reach = 1.5 * spacing;
       }
     }
@@ -326,14 +327,19 @@ private:
     ws.fitted.assign(m_radii.size(), 0);
     if(m_fine_levels > 0)
     {
-      const double length = m_fine_radii.back();
+      // the shells' unit is the largest radius whether or not it is fitted
+      // here, so that the small radii's fits do not depend on it
+      const double length = m_radii.back();
       ws.search.balls(m_graph, v, m_fine_radii);
       prepare(v, f, length, m_fine_levels, ws, ends);
       for(std::size_t j = 0; j < m_fine_levels; ++j)
         ws.fitted[j] = fit(f, ends[j], m_radii[j], length, ws, ws.fits[j], m_with_error[j] ? &ws.errors[j] : nullptr);
     }
     if(m_centers)
+    {
+      CGAL_precondition(m_center_fits.size() == m_centers->size() * (m_radii.size() - m_fine_levels));
       interpolate_large_radii(v, ws);
+    }
 
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
@@ -364,9 +370,11 @@ private:
       }
     }
     // the wider balls of the few vertices that need them, last: their
-    // searches replace the shared one
+    // searches replace the shared one; a large radius is first fitted at
+    // the vertex itself, as its centers had no value to give
     for(std::size_t r : to_widen)
-      for(int widening = 1; widening <= 2 && !out[r].defined(); ++widening)
+      for(int widening = radius_level(m_rules[r].radius) < m_fine_levels ? 1 : 0;
+          widening <= 2 && !out[r].defined(); ++widening)
       {
         const double radius = m_rules[r].radius * std::pow(1.5, widening);
         ws.search.balls(m_graph, v, std::vector<double>(1, radius));

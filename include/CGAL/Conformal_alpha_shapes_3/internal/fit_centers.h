@@ -9,7 +9,7 @@
 // manual, "Neighborhoods", large radii). A ball of 16 sample spacings holds
 // about 800 vertices: fitting it at every vertex costs 800 neighbor visits
 // per vertex, while the fitted curvature changes little between vertices a
-// quarter of the radius apart. This header chooses the centers and the
+// sixth of the radius apart. This header chooses the centers and the
 // weights that carry their values to a vertex.
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
@@ -46,9 +46,9 @@ inline double median_edge_length(const Vertex_graph& g)
 
 // Centers more than `spacing` apart such that every vertex is within
 // `spacing` of one, connected to it inside that ball (chosen greedily in
-// vertex order, which follows space: the vertices of the shape come
-// spatially sorted); each vertex belongs to the nearest center that covers
-// it. Two centers are adjacent when an edge joins vertices belonging to
+// vertex order; the surfaces of the pipeline have their vertices spatially
+// sorted, and any order gives a valid cover); each vertex belongs to the
+// nearest center that covers it. Two centers are adjacent when an edge joins vertices belonging to
 // them: the centers around a vertex are its own and those adjacent to it.
 struct Fit_centers
 {
@@ -128,11 +128,16 @@ struct Center_fit
 // around it (`around`, each with its position), interpolated by a weighted
 // linear least-squares fit in the vertex's tangent plane: exact for values
 // that vary linearly along the surface, so that the vertex does not take
-// the curvature of a center a quarter of a radius away. With fewer than
-// three defined centers, or centers on a line, the weighted mean. The
-// uncertainty is always the weighted mean (weights that stay positive).
-// `reach` sets the weights (1 - d^2 / reach^2)^2; false when no center
-// around has a defined fit.
+// the curvature of a center a sixth of a radius away. With fewer than
+// four defined centers, centers nearly on a line, or weights that
+// extrapolate (their absolute values summing to more than 3: the vertex
+// outside its centers, at a border), the weighted mean. A center seen
+// from the other side (its normal against n: a thin part, a sheet close
+// to itself) counts with its normal and shape operator negated, which
+// describe the same surface. The uncertainty is always the weighted mean.
+// `reach` sets the weights (1 - d^2 / reach^2)^2, with a floor so that
+// every center around counts a little; false when no center around has a
+// defined fit or the interpolated normal does not face n's side.
 inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
                                     const std::vector<std::pair<const Center_fit*, Vec3> >& around,
                                     double reach, Local_curvature& out, Quadric_fit_error& error)
@@ -147,7 +152,7 @@ inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
       continue;
     const Vec3 o = (a.second - p) / reach;
     const double u = (std::max)(0., 1 - o.squaredNorm());
-    const double w = u * u + 1e-6;  // every center counts a little: none is beyond `reach` by much
+    const double w = u * u + 1e-6;
     const Eigen::Vector3d phi(1, o.dot(f.e1), o.dot(f.e2));
     moments += w * phi * phi.transpose();
     total += w;
@@ -158,13 +163,24 @@ inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
   // weight of center i in the interpolated value: w_i e0' M^-1 phi_i
   Eigen::Vector3d solution = Eigen::Vector3d::Zero();
   bool linear = false;
-  if(count >= 3)
+  if(count >= 4)
   {
     const Eigen::LDLT<Eigen::Matrix3d> ldlt(moments);
     const auto pivots = ldlt.vectorD();
-    linear = ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-6 * pivots.maxCoeff();
+    linear = ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-3 * pivots.maxCoeff();
     if(linear)
+    {
       solution = ldlt.solve(Eigen::Vector3d(1, 0, 0));
+      double spread = 0;
+      for(const auto& a : around)
+        if(a.first->defined)
+        {
+          const Vec3 o = (a.second - p) / reach;
+          const double u = (std::max)(0., 1 - o.squaredNorm());
+          spread += std::abs((u * u + 1e-6) * solution.dot(Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2))));
+        }
+      linear = spread <= 3;
+    }
   }
   Eigen::Matrix3d shape = Eigen::Matrix3d::Zero();
   Vec3 normal = Vec3::Zero();
@@ -177,15 +193,16 @@ inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
     const double u = (std::max)(0., 1 - o.squaredNorm());
     const double w = u * u + 1e-6;
     const double lambda = linear ? w * solution.dot(Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2))) : w / total;
-    shape += lambda * a.first->shape;
-    normal += lambda * a.first->normal;
+    const double side = a.first->normal.dot(n) < 0 ? -1. : 1.;
+    shape += (side * lambda) * a.first->shape;
+    normal += (side * lambda) * a.first->normal;
     const double mean = w / total;
     error.mean_curvature += mean * a.first->error.mean_curvature;
     error.noise += mean * a.first->error.noise;
     error.degrees_of_freedom += mean * a.first->error.degrees_of_freedom;
     error.per_noise += mean * a.first->error.per_noise;
   }
-  if(!(normal.norm() > 0))
+  if(!(normal.dot(n) > 0))
     return false;
   const Tangent_frame g = frame_from_normal(normal.normalized());
   const double a = g.e1.dot(shape * g.e1), b = 2 * g.e1.dot(shape * g.e2), c = g.e2.dot(shape * g.e2);

@@ -22,7 +22,7 @@
 //    without further test (no double construction could hold both them and
 //    the rest). With fewer than 2 (k + 1) points, or when fewer than half
 //    the points have a positive d_k (mostly duplicates), no point is tested.
-// 3. The kept points are recenterd on a robust center c, the per-axis
+// 3. The kept points are recentered on a robust center c, the per-axis
 //    median of the kept points, and divided by a robust size s, a power of
 //    two within a factor 2 of the median over the kept points of the
 //    largest coordinate difference to c (the largest distance to c when
