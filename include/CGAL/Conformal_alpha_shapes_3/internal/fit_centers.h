@@ -143,17 +143,22 @@ inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
                                     double reach, Local_curvature& out, Quadric_fit_error& error)
 {
   const Tangent_frame f = frame_from_normal(n);
+  // a center's weight and its row (1, x, y) in the vertex's tangent plane
+  auto weight_and_row = [&](const Vec3& center, Eigen::Vector3d& phi) {
+    const Vec3 o = (center - p) / reach;
+    phi = Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2));
+    const double u = (std::max)(0., 1 - o.squaredNorm());
+    return u * u + 1e-6;
+  };
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d phi;
   double total = 0;
   std::size_t count = 0;
   for(const auto& a : around)
   {
     if(!a.first->defined)
       continue;
-    const Vec3 o = (a.second - p) / reach;
-    const double u = (std::max)(0., 1 - o.squaredNorm());
-    const double w = u * u + 1e-6;
-    const Eigen::Vector3d phi(1, o.dot(f.e1), o.dot(f.e2));
+    const double w = weight_and_row(a.second, phi);
     moments += w * phi * phi.transpose();
     total += w;
     ++count;
@@ -175,9 +180,8 @@ inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
       for(const auto& a : around)
         if(a.first->defined)
         {
-          const Vec3 o = (a.second - p) / reach;
-          const double u = (std::max)(0., 1 - o.squaredNorm());
-          spread += std::abs((u * u + 1e-6) * solution.dot(Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2))));
+          const double w = weight_and_row(a.second, phi);
+          spread += std::abs(w * solution.dot(phi));
         }
       linear = spread <= 3;
     }
@@ -189,10 +193,8 @@ inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
   {
     if(!a.first->defined)
       continue;
-    const Vec3 o = (a.second - p) / reach;
-    const double u = (std::max)(0., 1 - o.squaredNorm());
-    const double w = u * u + 1e-6;
-    const double lambda = linear ? w * solution.dot(Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2))) : w / total;
+    const double w = weight_and_row(a.second, phi);
+    const double lambda = linear ? w * solution.dot(phi) : w / total;
     const double side = a.first->normal.dot(n) < 0 ? -1. : 1.;
     shape += (side * lambda) * a.first->shape;
     normal += (side * lambda) * a.first->normal;
