@@ -148,19 +148,28 @@ Conventions: with outward-oriented faces, convex regions have positive
 curvature (a sphere of radius `r`: `H = 1/r`, `K = 1/r^2`); the curvatures
 are `max_curvature >= min_curvature`, `H` their mean and `K` their product.
 
+The `QUADRIC_FIT` estimator fits a quadric height function; for the
+candidates of `neighborhood_radii` with 30 vertices or more, a quartic,
+which removes the quadric's bias (of relative size `(k r)^2`) at the price
+of a larger variance, so that the automatic rule can use larger, less noisy
+radii. A ring size or `neighborhood_radius` keeps the quadric, which means
+the same at two sampling densities more closely (see the manual).
+
 Neighborhood, by the first of these named parameters given:
 - `neighborhood_radii`: per vertex, one of the candidate radii, chosen from
-  the data alone by the intersection of confidence intervals rule. The
+  the data alone by least expected squared error of the mean curvature. The
   vertex's noise `sigma` is measured from the residual variances `s^2` of the
-  fits at the four smallest radii, by fitting `s^2(r) = sigma^2 + beta r^6`
-  (noise, plus the cubic terms a quadric misses; a clean sample reads about
-  0). Each fit gives the mean curvature with the standard error that noise
-  `sigma` on the heights implies (weighted least squares); the largest radius
-  is kept whose interval (ten such standard errors either side: they assume
-  independent errors, which smoothed noisy points do not have) still meets
-  the intervals of all smaller radii. On clean samples this keeps the
-  smallest radius, under noise it grows (see the manual's measurements).
-  `QUADRIC_FIT` only.
+  fits at the four smallest radii, by fitting `s^2(r) = sigma^2 + beta r^10`
+  (a clean sample reads about 0), and raised 7 times (smoothed noisy points
+  hide most of their noise from the residuals, not from the curvature; given
+  the sample's noise before smoothing, as `Multiscale_curvatures` does, that
+  is used instead). Each fit gives the standard error of the mean curvature
+  that `sigma` implies; its bias is modeled as `c r^4`, `c` fitted to the
+  fits' mean curvatures; the radius of least `c^2 r^8` plus squared standard
+  error is kept, among the radii below the first whose fit leaves residuals
+  over 3 `sigma` (not a height polynomial at that size: a thin part, or
+  detail). On clean samples this keeps the smallest radius, under noise it
+  grows (see the manual's measurements). `QUADRIC_FIT` only.
 - `neighborhood_radius`: the vertices within that distance of the vertex
   and connected to it through surface edges inside that ball (a ball cut to
   the vertex's side of the surface: a thin part or a nearby sheet does not
@@ -319,7 +328,7 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   std::vector<internal::Vec3> normals(graph.size());
   for(std::size_t i = 0; i < graph.size(); ++i)
     normals[i] = internal::chen_wu_normal(by_index[i], pmesh, vpm);
-  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, false);
+  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, false);
   internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
   internal::Vertex_estimate estimate;
   estimation.estimate(0, workspace, &estimate);

@@ -294,7 +294,7 @@ public:
     const std::vector<std::vector<internal::Vertex_estimate> > estimates =
       internal::estimate_at_every_vertex<CGAL::Parallel_if_available_tag>(
         graph, internal::chen_wu_normals<CGAL::Parallel_if_available_tag>(surface, working, vertex_index), rules,
-        estimator);
+        estimator, m_noise.noise * m_noise.spacing);
 
     Nearest_surface_point nearest(*this, surface, working);
     std::vector<std::vector<Point_curvature<Kernel> > > layers;
