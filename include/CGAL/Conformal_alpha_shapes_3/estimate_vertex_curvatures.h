@@ -153,7 +153,10 @@ candidates of `neighborhood_radii` with 30 vertices or more, a quartic,
 which removes the quadric's bias (of relative size `(k r)^2`) at the price
 of a larger variance, so that the automatic rule can use larger, less noisy
 radii. A ring size or `neighborhood_radius` keeps the quadric, which means
-the same at two sampling densities more closely (see the manual).
+the same at two sampling densities more closely (see the manual). A
+quadric's curvature is corrected for the fourth-order term of a surface of
+that curvature (exact on spheres and cylinders), which removes most of the
+quadric's bias without adding variance.
 
 Neighborhood, by the first of these named parameters given:
 - `neighborhood_radii`: per vertex, one of the candidate radii, chosen from

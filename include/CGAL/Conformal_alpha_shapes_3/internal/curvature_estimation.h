@@ -123,7 +123,9 @@ constexpr double large_radius_per_center_spacing = 6;
 // the quadric's bias, of relative size (k r)^2, which lets the rule use
 // larger, less noisy radii (measured on the ellipsoid and torus at 100k
 // points with noise 0.1 spacing: the automatic choice's median H error
-// 3.9% -> 1.5%). A fixed radius or ring size keeps the quadric: the
+// 3.9% -> 1.5%). A fixed radius or ring size keeps the quadric (corrected
+// for the fourth order of a surface of its own curvature, `quadric_fit()`,
+// which removes most of its bias without the quartic's variance): the
 // quartic resolves more detail at the same radius, so that on a bumpy
 // sphere sampled at 4k and 16k points the median difference of H at one
 // radius grew from 0.031 to 0.052 (a radius would mean less the same at
