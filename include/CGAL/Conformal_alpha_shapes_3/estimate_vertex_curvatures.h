@@ -148,15 +148,11 @@ Conventions: with outward-oriented faces, convex regions have positive
 curvature (a sphere of radius `r`: `H = 1/r`, `K = 1/r^2`); the curvatures
 are `max_curvature >= min_curvature`, `H` their mean and `K` their product.
 
-The `QUADRIC_FIT` estimator fits a quadric height function; for the
-candidates of `neighborhood_radii` with 30 vertices or more, a quartic,
-which removes the quadric's bias (of relative size `(k r)^2`) at the price
-of a larger variance, so that the automatic rule can use larger, less noisy
-radii. A ring size or `neighborhood_radius` keeps the quadric, which means
-the same at two sampling densities more closely (see the manual). A
-quadric's curvature is corrected for the fourth-order term of a surface of
-that curvature (exact on spheres and cylinders), which removes most of the
-quadric's bias without adding variance.
+The `QUADRIC_FIT` estimator fits a quadric height function, corrected for
+the fourth-order term of a surface of the fitted curvature (exact on
+spheres and cylinders): that removes most of a plain quadric's bias, of
+relative size `(k r)^2`, without adding variance, so that large, less noisy
+radii stay accurate where the curvature varies slowly.
 
 Neighborhood, by the first of these named parameters given:
 - `neighborhood_radii`: per vertex, one of the candidate radii, chosen from
@@ -167,9 +163,10 @@ Neighborhood, by the first of these named parameters given:
   hide most of their noise from the residuals, not from the curvature; given
   the sample's noise before smoothing, as `Multiscale_curvatures` does, that
   is used instead). Each fit gives the standard error of the mean curvature
-  that `sigma` implies; its bias is modeled as `c r^4`, `c` fitted to the
-  fits' mean curvatures; the radius of least `c^2 r^8` plus squared standard
-  error is kept, among the radii below the first whose fit leaves residuals
+  that `sigma` implies; its bias is modeled as `c r^2` (what the correction
+  leaves: the curvature's variation), `c` fitted to the fits' mean
+  curvatures; the radius of least `c^2 r^4` plus squared standard error is
+  kept, among the radii below the first whose fit leaves residuals
   over 3 `sigma` (not a height polynomial at that size: a thin part, or
   detail). On clean samples this keeps the smallest radius, under noise it
   grows (see the manual's measurements). `QUADRIC_FIT` only.

@@ -117,25 +117,6 @@ struct Radius_fit
 // centers are at least 1.75 edges apart, a fifth of the vertices.
 constexpr double large_radius_in_edges = 10.5;
 constexpr double large_radius_per_center_spacing = 6;
-// The fits of the QUADRIC_FIT estimator: a quadric, except that the
-// automatic rule's candidates take a quartic on `quartic_fit_neighbors`
-// neighbors or more (its 15 coefficients need them). The quartic removes
-// the quadric's bias, of relative size (k r)^2, which lets the rule use
-// larger, less noisy radii (measured on the ellipsoid and torus at 100k
-// points with noise 0.1 spacing: the automatic choice's median H error
-// 3.9% -> 1.5%). A fixed radius or ring size keeps the quadric (corrected
-// for the fourth order of a surface of its own curvature, `quadric_fit()`,
-// which removes most of its bias without the quartic's variance): the
-// quartic resolves more detail at the same radius, so that on a bumpy
-// sphere sampled at 4k and 16k points the median difference of H at one
-// radius grew from 0.031 to 0.052 (a radius would mean less the same at
-// two densities), and at a radius too small for the noise it is the
-// noisier (the 100k ellipsoid at 8 spacings: 6.4% -> 19.5%). The quartic's
-// kernel fades at 2 radii rather than 1.5: flatter, it lowers the quartic's
-// larger variance (the automatic choice on the 100k ellipsoid: 1.67% ->
-// 1.56%).
-constexpr std::size_t quartic_fit_neighbors = 30;
-constexpr Fit_kernel quadric_kernel{1.5, 4}, quartic_kernel{2, 4};
 
 class Curvature_estimation
 {
@@ -148,7 +129,7 @@ public:
     std::vector<Quadric_shell> shells;                    // by level, then shell
     std::array<int, number_of_quadric_shells> shell_of;  // in the current level
     std::vector<Neighbor> neighbors;
-    std::vector<Radius_fit> candidate_fits, fixed_fits;  // by radius, for the automatic rule and fixed rules
+    std::vector<Radius_fit> fits;  // by radius
     std::vector<Candidate_fit> candidates;
     std::vector<std::pair<const Center_fit*, Vec3> > around;  // centers around the vertex
   };
@@ -172,15 +153,10 @@ public:
     }
     std::sort(m_radii.begin(), m_radii.end());
     m_radii.erase(std::unique(m_radii.begin(), m_radii.end()), m_radii.end());
-    m_candidate_level.assign(m_radii.size(), 0);
-    m_fixed_level.assign(m_radii.size(), 0);
+    m_with_error.assign(m_radii.size(), 0);
     for(const Neighborhood_rule& rule : rules)
-    {
       for(double r : rule.candidates)
-        m_candidate_level[radius_level(r)] = 1;
-      if(rule.candidates.empty() && rule.radius > 0)
-        m_fixed_level[radius_level(rule.radius)] = 1;
-    }
+        m_with_error[radius_level(r)] = 1;
 
     m_fine_levels = m_radii.size();
     const double edge = at_centers && estimator == QUADRIC_FIT && !m_radii.empty() ? median_edge_length(graph) : 0.;
@@ -209,7 +185,7 @@ public:
       return;
     const std::size_t large = m_radii.size() - m_fine_levels;
     const std::vector<double> radii(m_radii.begin() + std::ptrdiff_t(m_fine_levels), m_radii.end());
-    m_center_fits.assign(m_centers->size() * large * 2, Center_fit());
+    m_center_fits.assign(m_centers->size() * large, Center_fit());
     for_each_index<ConcurrencyTag>(m_centers->size(), [&]() { return make_workspace(); },
       [&](std::size_t c, Workspace& ws) {
         const std::size_t v = m_centers->vertex[c];
@@ -221,14 +197,10 @@ public:
         prepare(v, f, radii.back(), large, ws, ends);
         for(std::size_t j = 0; j < large; ++j)
         {
-          const std::size_t level = m_fine_levels + j;
-          Radius_fit for_candidates, for_fixed;
-          fit(f, ends[j], radii[j], radii.back(), ws, m_candidate_level[level] != 0, m_fixed_level[level] != 0,
-              for_candidates, for_fixed);
-          const Radius_fit* views[2] = {&for_candidates, &for_fixed};
-          for(std::size_t view = 0; view < 2; ++view)
-            if(views[view]->defined)
-              m_center_fits[center_fit_index(c, j, view)].set(views[view]->curvature, views[view]->error);
+          Radius_fit q;
+          fit(f, ends[j], radii[j], radii.back(), ws, m_with_error[m_fine_levels + j] != 0, q);
+          if(q.defined)
+            m_center_fits[c * large + j].set(q.curvature, q.error);
         }
       });
   }
@@ -252,13 +224,6 @@ public:
   }
 
 private:
-  // Center c's fit at large radius j, for the automatic rule (view 0) or
-  // for a fixed rule (view 1).
-  std::size_t center_fit_index(std::size_t c, std::size_t j, std::size_t view) const
-  {
-    return (c * (m_radii.size() - m_fine_levels) + j) * 2 + view;
-  }
-
   std::size_t radius_level(double r) const
   {
     return std::size_t(std::lower_bound(m_radii.begin(), m_radii.end(), r) - m_radii.begin());
@@ -324,82 +289,49 @@ private:
       ends[level] = end;
   }
 
-  // The fits over the prepared neighbors up to `end`, fading at `fade`:
-  // for the automatic rule's candidates when `for_candidates` (with their
-  // uncertainty), for a fixed rule when `for_fixed` (they differ on
-  // `quartic_fit_neighbors` neighbors or more).
+  // The fit over the prepared neighbors up to `end`, fading at `fade`,
+  // with its uncertainty when `with_error`.
   void fit(const Tangent_frame& f, const Level_end& end, double fade, double length, Workspace& ws,
-           bool for_candidates, bool for_fixed, Radius_fit& candidate, Radius_fit& fixed) const
+           bool with_error, Radius_fit& out) const
   {
-    candidate = fixed = Radius_fit();
-    auto finite = [](const Radius_fit& q) { return std::isfinite(q.curvature.k1) && std::isfinite(q.curvature.k2); };
-    if(m_estimator != QUADRIC_FIT)
+    bool ok = false;
+    if(m_estimator == QUADRIC_FIT)
+      ok = quadric_fit(f, ws.shells.data(), end.shells, end.neighbors, fade, length, out.curvature,
+                       with_error ? &out.error : nullptr);
+    else
     {
       const std::vector<Neighbor> prefix(ws.neighbors.begin(), ws.neighbors.begin() + std::ptrdiff_t(end.neighbors));
-      fixed.defined = (m_estimator == PAPER_EULER_FIT ? paper_euler_fit(f.n, prefix, fixed.curvature)
-                                                      : euler_least_squares_fit(f.n, prefix, fixed.curvature))
-                      && finite(fixed);
-      return;
+      ok = m_estimator == PAPER_EULER_FIT ? paper_euler_fit(f.n, prefix, out.curvature)
+                                          : euler_least_squares_fit(f.n, prefix, out.curvature);
     }
-    const Quadric_shell* shells = ws.shells.data();
-    auto height_fit = [&](Radius_fit& q, bool with_error, bool quartic) {
-      q.defined = quadric_fit(f, shells, end.shells, end.neighbors, fade, length, q.curvature,
-                              with_error ? &q.error : nullptr, quartic ? quartic_kernel : quadric_kernel,
-                              quartic ? 4 : 2)
-                  && finite(q);
-    };
-    if(end.neighbors < quartic_fit_neighbors)
-    {
-      height_fit(for_candidates ? candidate : fixed, for_candidates, false);
-      if(for_candidates && for_fixed)
-        fixed = candidate;
-      return;
-    }
-    if(for_candidates)
-      height_fit(candidate, true, true);
-    if(for_fixed)
-      height_fit(fixed, false, false);
-  }
-
-  // `fit()` for a fixed rule alone: false when its fit is undefined.
-  bool fit_fixed(const Tangent_frame& f, const Level_end& end, double fade, double length, Workspace& ws,
-                 Local_curvature& out) const
-  {
-    Radius_fit unused, fixed;
-    fit(f, end, fade, length, ws, false, true, unused, fixed);
-    out = fixed.curvature;
-    return fixed.defined;
+    out.defined = ok && std::isfinite(out.curvature.k1) && std::isfinite(out.curvature.k2);
   }
 
   // The fits at the large radii interpolated from the centers around v.
   void interpolate_large_radii(std::size_t v, Workspace& ws) const
   {
+    const std::size_t large = m_radii.size() - m_fine_levels;
     const std::size_t own = m_centers->center_of[v];
-    for(std::size_t level = m_fine_levels; level < m_radii.size(); ++level)
-      for(std::size_t view = 0; view < 2; ++view)
+    for(std::size_t j = 0; j < large; ++j)
+    {
+      ws.around.clear();
+      ws.around.emplace_back(&m_center_fits[own * large + j], m_graph.points[m_centers->vertex[own]]);
+      for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
       {
-        if(!(view == 0 ? m_candidate_level[level] : m_fixed_level[level]))
-          continue;
-        const std::size_t j = level - m_fine_levels;
-        ws.around.clear();
-        ws.around.emplace_back(&m_center_fits[center_fit_index(own, j, view)], m_graph.points[m_centers->vertex[own]]);
-        for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
-        {
-          const std::size_t c = m_centers->adjacent[e];
-          ws.around.emplace_back(&m_center_fits[center_fit_index(c, j, view)], m_graph.points[m_centers->vertex[c]]);
-        }
-        Radius_fit& out = (view == 0 ? ws.candidate_fits : ws.fixed_fits)[level];
-        out.defined = interpolate_center_fits(m_graph.points[v], m_normals[v], ws.around, m_center_reach,
-                                              out.curvature, out.error);
+        const std::size_t c = m_centers->adjacent[e];
+        ws.around.emplace_back(&m_center_fits[c * large + j], m_graph.points[m_centers->vertex[c]]);
       }
+      Radius_fit& out = ws.fits[m_fine_levels + j];
+      out.defined = interpolate_center_fits(m_graph.points[v], m_normals[v], ws.around, m_center_reach,
+                                            out.curvature, out.error);
+    }
   }
 
   void estimate_in_balls(std::size_t v, Workspace& ws, Vertex_estimate* out) const
   {
     const Tangent_frame f = frame_from_normal(m_normals[v]);
     std::vector<Level_end> ends;
-    ws.candidate_fits.assign(m_radii.size(), Radius_fit());
-    ws.fixed_fits.assign(m_radii.size(), Radius_fit());
+    ws.fits.assign(m_radii.size(), Radius_fit());
     if(m_fine_levels > 0)
     {
       // the shells' unit is the largest radius whether or not it is fitted
@@ -408,12 +340,11 @@ private:
       ws.search.balls(m_graph, v, m_fine_radii);
       prepare(v, f, length, m_fine_levels, ws, ends);
       for(std::size_t j = 0; j < m_fine_levels; ++j)
-        fit(f, ends[j], m_radii[j], length, ws, m_candidate_level[j] != 0, m_fixed_level[j] != 0, ws.candidate_fits[j],
-            ws.fixed_fits[j]);
+        fit(f, ends[j], m_radii[j], length, ws, m_with_error[j] != 0, ws.fits[j]);
     }
     if(m_centers)
     {
-      CGAL_precondition(m_center_fits.size() == m_centers->size() * (m_radii.size() - m_fine_levels) * 2);
+      CGAL_precondition(m_center_fits.size() == m_centers->size() * (m_radii.size() - m_fine_levels));
       interpolate_large_radii(v, ws);
     }
 
@@ -426,7 +357,7 @@ private:
         ws.candidates.clear();
         for(double radius : rule.candidates)
         {
-          const Radius_fit& q = ws.candidate_fits[radius_level(radius)];
+          const Radius_fit& q = ws.fits[radius_level(radius)];
           if(q.defined)
             ws.candidates.push_back(Candidate_fit{q.curvature, q.error, radius});
         }
@@ -438,7 +369,7 @@ private:
       }
       else if(rule.radius > 0)
       {
-        const Radius_fit& q = ws.fixed_fits[radius_level(rule.radius)];
+        const Radius_fit& q = ws.fits[radius_level(rule.radius)];
         if(q.defined)
           out[r] = Vertex_estimate{q.curvature, rule.radius};
         else
@@ -455,9 +386,10 @@ private:
         const double radius = m_rules[r].radius * std::pow(1.5, widening);
         ws.search.balls(m_graph, v, std::vector<double>(1, radius));
         prepare(v, f, radius, 1, ws, ends);
-        Local_curvature c;
-        if(fit_fixed(f, ends[0], radius, radius, ws, c))
-          out[r] = Vertex_estimate{c, radius};
+        Radius_fit q;
+        fit(f, ends[0], radius, radius, ws, false, q);
+        if(q.defined)
+          out[r] = Vertex_estimate{q.curvature, radius};
       }
   }
 
@@ -489,9 +421,10 @@ private:
         for(std::size_t k = 0; k < ws.search.end(ring); ++k)
           reach = (std::max)(reach, squared_distance[k]);
         reach = std::sqrt(reach);
-        Local_curvature c;
-        if(fit_fixed(f, ends[ring], reach, length, ws, c))
-          out[r] = Vertex_estimate{c, reach};
+        Radius_fit q;
+        fit(f, ends[ring], reach, length, ws, false, q);
+        if(q.defined)
+          out[r] = Vertex_estimate{q.curvature, reach};
       }
     }
   }
@@ -502,7 +435,7 @@ private:
   Curvature_estimator m_estimator;
   double m_sample_noise;           // of the points before any denoising, model units; 0 when unknown
   std::vector<double> m_radii;     // every rule's radii, increasing
-  std::vector<char> m_candidate_level, m_fixed_level;  // by radius: a candidate of an automatic rule, a fixed rule's
+  std::vector<char> m_with_error;  // by radius: a candidate of an automatic rule
   std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
   // radii [0, m_fine_levels) are fitted at every vertex, the others at
   // the centers

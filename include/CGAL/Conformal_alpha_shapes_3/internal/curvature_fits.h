@@ -169,7 +169,7 @@ struct Quadric_fit_error
   double per_noise = 0;           // standard error of H per unit of noise: mean_curvature / noise
 };
 
-// Neighbors of a vertex as the height fit sees them, summed by shells:
+// Neighbors of a vertex as the quadric fit sees them, summed by shells:
 // the neighbors in one shell (about the same distance from the vertex, see
 // `quadric_shell_index()`) share their sums, and a fit weighs the whole
 // shell by its kernel at the shell's mean squared distance. The cost of a
@@ -177,17 +177,15 @@ struct Quadric_fit_error
 // several radii around a vertex share one pass over the neighbors.
 // Coordinates (x, y, z) are in the vertex's tangent frame divided by a
 // length L; squared distances are in model units.
-// A shell keeps the moments sum x^i y^j (i + j <= 8) and
-// sum z x^i y^j (i + j <= 4) rather than the products of the rows: every
-// entry of X' X of a height polynomial of degree 4 or less is one of the
-// moments (45 up to degree 8 for a quartic's 15 x 15 matrix, 15 up to
-// degree 4 for a quadric's 6 x 6 one).
-constexpr int max_height_fit_degree = 4;
+// A shell keeps the moments sum x^i y^j (i + j <= 6) and sum z x^i y^j
+// (i + j <= 2) rather than the products of the rows: every entry of the
+// quadric's X' X is a moment of degree 4 or less, and its correction for
+// the fourth order (`quadric_fit()`) needs those of degree 5 and 6.
 struct Quadric_shell
 {
-  static constexpr int size = 2 * max_height_fit_degree + 1;
-  double moments[size][size] = {};  // [i][j]: sum x^i y^j, i + j <= 2 max_height_fit_degree
-  double heights[size][size] = {};  // [i][j]: sum z x^i y^j, i + j <= max_height_fit_degree
+  static constexpr int size = 7;
+  double moments[size][size] = {};  // [i][j]: sum x^i y^j, i + j <= 6
+  double heights[3][3] = {};        // [i][j]: sum z x^i y^j, i + j <= 2
   double squared_heights = 0;       // sum of z^2
   double count = 0;
   double squared_distances = 0;
@@ -206,8 +204,8 @@ struct Quadric_shell
     for(int i = 0; i < size; ++i)
       for(int j = 0; j < size - i; ++j)
         moments[i][j] += px[i] * py[j];
-    for(int i = 0; i <= max_height_fit_degree; ++i)
-      for(int j = 0; j <= max_height_fit_degree - i; ++j)
+    for(int i = 0; i <= 2; ++i)
+      for(int j = 0; j <= 2 - i; ++j)
         heights[i][j] += z * px[i] * py[j];
     squared_heights += z * z;
     count += 1;
@@ -215,29 +213,9 @@ struct Quadric_shell
   }
 };
 
-// The monomials x^i y^j of the height polynomial, in the order of its
-// coefficients: the quadric's (x^2, x y, y^2, x, y, 1) first, then the
-// cubic and the quartic terms.
-constexpr int height_monomials[15][2] = {{2, 0}, {1, 1}, {0, 2}, {1, 0}, {0, 1}, {0, 0},
-                                         {3, 0}, {2, 1}, {1, 2}, {0, 3},
-                                         {4, 0}, {3, 1}, {2, 2}, {1, 3}, {0, 4}};
-inline int number_of_height_monomials(int degree) { return degree >= 4 ? 15 : degree == 3 ? 10 : 6; }
-
-// The kernel of the fits: a neighbor at squared distance d2 from the vertex
-// weighs (1 - d2 / (reach^2 R^2))^power in a neighborhood of radius R.
-struct Fit_kernel
-{
-  double reach;
-  int power;
-  double operator()(double squared_distance, double squared_radius) const
-  {
-    const double u = 1 - squared_distance / (reach * reach * squared_radius);
-    double w = u > 0 ? u : 0.;
-    for(int k = 1; k < power; ++k)
-      w *= u > 0 ? u : 0.;
-    return w;
-  }
-};
+// The monomials x^i y^j of the quadric, in the order of its coefficients
+// (x^2, x y, y^2, x, y, 1).
+constexpr int quadric_monomials[6][2] = {{2, 0}, {1, 1}, {0, 2}, {1, 0}, {0, 1}, {0, 0}};
 
 // Shells are a quarter of an octave of squared distance wide (distances
 // within 9% of each other), relative to the length L: shell 0 holds
@@ -254,65 +232,56 @@ inline int quadric_shell_index(double squared_distance, double squared_length)
 }
 
 // Weighted least-squares fit of the height function
-//   z = A x^2 + B x y + C y^2 + D x + E y + F (+ the cubic and quartic terms
-//   when `degree` is 3 or 4)
+//   z = A x^2 + B x y + C y^2 + D x + E y + F
 // to the vertex (at the origin) and the neighbors summed in
 // `shells[0, shell_count)` (`neighbors` of them), in the frame `f` of the
 // vertex normal. The linear terms absorb the normal's error and the
 // constant term the vertex's own displacement (noise); the curvature is that
 // of the graph at the origin, positive where the surface bends away from
-// the normal. The quartic terms remove the bias that the surface's fourth
-// order leaves in a quadric's A, B, C (of relative size (k R)^2), at the
-// price of a larger variance at the same radius; a quadric is corrected
-// for the fourth order of a surface of its own curvature instead (below),
-// which keeps its variance and removes most of that bias where the
-// curvature varies slowly. A neighbor's weight is
-// `kernel` at its shell's mean squared distance, for the radius `fade`; the
-// shells are in coordinates divided by `length`, and the fit runs in
-// coordinates divided by `fade`, which condition it whatever the size of
-// the neighborhood.
+// the normal. The fit is corrected for the fourth order of a surface of its
+// own curvature (below), which removes most of the bias that a plain
+// quadric has where the curvature varies slowly. A neighbor at distance d
+// has the weight (1 - d^2 / (1.5 fade)^2)^4, which fades to 0 at 1.5 times
+// `fade` (the neighborhood's radius), taken at its shell's mean squared
+// distance; the shells are in coordinates divided by `length`, and the fit
+// runs in coordinates divided by `fade`, which condition it whatever the
+// size of the neighborhood.
 // When `error` is given, it receives the uncertainty of the mean curvature
 // A + C for heights with independent noise of one standard deviation
 // (weighted least squares: the sandwich variance, and the residual variance
 // over the effective degrees of freedom; infinite with none left): what the
 // automatic neighborhood weighs against the bias of larger neighborhoods.
-// False with fewer neighbors than coefficients or a singular system.
+// False with fewer than 5 neighbors or a singular system.
 inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std::size_t shell_count,
                         std::size_t neighbors, double fade, double length, Local_curvature& out,
-                        Quadric_fit_error* error = nullptr, const Fit_kernel& kernel = Fit_kernel{1.5, 4},
-                        int degree = 2)
+                        Quadric_fit_error* error = nullptr)
 {
-  if(shell_count == 0 || !(fade > 0) || degree > max_height_fit_degree)
-    return false;
-  const int top = 2 * degree;
-  // the quadric's correction needs the moments up to degree 6
-  const int moment_top = degree == 2 ? 6 : top;
-  const int n = number_of_height_monomials(degree);
-  if(neighbors < std::size_t(n - 1))
+  if(neighbors < 5 || !(fade > 0))
     return false;
   constexpr int size = Quadric_shell::size;
   // the weighted moments (and squared-weighted ones for the error); the
   // vertex's own row is (0, ..., 0, 1) with height 0 and weight 1
-  double m[size][size] = {}, m2[size][size] = {}, h[size][size] = {};
+  double m[size][size] = {}, m2[5][5] = {}, h[3][3] = {};
   double zz = 0, weights = 1;
-  const double squared_fade = fade * fade;
+  const double reach2 = 2.25 * fade * fade;
   for(std::size_t t = 0; t < shell_count; ++t)
   {
     const Quadric_shell& shell = shells[t];
-    const double w = kernel(shell.squared_distances / shell.count, squared_fade);
-    if(!(w > 0))
+    const double u = 1 - shell.squared_distances / (shell.count * reach2);
+    if(!(u > 0))
       continue;
-    for(int i = 0; i <= moment_top; ++i)
-      for(int j = 0; j <= moment_top - i; ++j)
+    const double w = (u * u) * (u * u);
+    for(int i = 0; i < size; ++i)
+      for(int j = 0; j < size - i; ++j)
         m[i][j] += w * shell.moments[i][j];
-    for(int i = 0; i <= degree; ++i)
-      for(int j = 0; j <= degree - i; ++j)
+    for(int i = 0; i <= 2; ++i)
+      for(int j = 0; j <= 2 - i; ++j)
         h[i][j] += w * shell.heights[i][j];
     zz += w * shell.squared_heights;
     if(error != nullptr)
     {
-      for(int i = 0; i <= top; ++i)
-        for(int j = 0; j <= top - i; ++j)
+      for(int i = 0; i <= 4; ++i)
+        for(int j = 0; j <= 4 - i; ++j)
           m2[i][j] += (w * w) * shell.moments[i][j];
       weights += w * shell.count;
     }
@@ -323,70 +292,66 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
   // from coordinates divided by `length` to coordinates divided by `fade`:
   // a monomial of degree k scales by s^k, s = length / fade, the height by s
   const double s = length / fade;
-  double power[2 * size];
+  double power[size];
   power[0] = 1;
-  for(int k = 1; k < 2 * size; ++k)
+  for(int k = 1; k < size; ++k)
     power[k] = power[k - 1] * s;
-  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 15, 15> Matrix;
-  typedef Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 15, 1> Vector;
-  Matrix normal_matrix(n, n), squared_weights(n, n);
-  Vector rhs(n);
-  for(int a = 0; a < n; ++a)
+  typedef Eigen::Matrix<double, 6, 6> Matrix6;
+  typedef Eigen::Matrix<double, 6, 1> Vector6;
+  Matrix6 normal_matrix, squared_weights;
+  Vector6 rhs;
+  for(int a = 0; a < 6; ++a)
   {
-    const int ia = height_monomials[a][0], ja = height_monomials[a][1];
+    const int ia = quadric_monomials[a][0], ja = quadric_monomials[a][1];
     rhs(a) = power[ia + ja + 1] * h[ia][ja];
-    for(int b = 0; b < n; ++b)
+    for(int b = 0; b < 6; ++b)
     {
-      const int i = ia + height_monomials[b][0], j = ja + height_monomials[b][1];
+      const int i = ia + quadric_monomials[b][0], j = ja + quadric_monomials[b][1];
       normal_matrix(a, b) = power[i + j] * m[i][j];
       squared_weights(a, b) = power[i + j] * m2[i][j];
     }
   }
-  const Eigen::LDLT<Matrix> ldlt(normal_matrix);
-  const Vector pivots = ldlt.vectorD();
+  const Eigen::LDLT<Matrix6> ldlt(normal_matrix);
+  const Vector6 pivots = ldlt.vectorD();
   if(ldlt.info() != Eigen::Success || !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
     return false;
-  const Vector least_squares = ldlt.solve(rhs);
-  Vector coef = least_squares;
-  if(degree == 2)
+  const Vector6 least_squares = ldlt.solve(rhs);
+  // The heights less the fourth-order term of a surface whose shape
+  // operator is the fitted S everywhere, (x' S x)(x' S^2 x) / 8: exact on
+  // spheres (k^3 r^4 / 8) and cylinders, where a quadric alone reads the
+  // curvature too high by a relative (k R)^2 term (measured: a unit sphere
+  // at a radius of 16 spacings, 3.2% -> 0.24%). One step: the term is
+  // second order in what it corrects.
+  const double b = least_squares(1);
+  const double p[3] = {2 * least_squares(0), 2 * b, 2 * least_squares(2)};  // x' S x = p0 x^2 + p1 x y + p2 y^2
+  const double q[3] = {p[0] * p[0] + b * b, 2 * b * (p[0] + p[2]), b * b + p[2] * p[2]};  // x' S^2 x
+  const double term[5] = {p[0] * q[0] / 8, (p[0] * q[1] + p[1] * q[0]) / 8,
+                          (p[0] * q[2] + p[1] * q[1] + p[2] * q[0]) / 8, (p[1] * q[2] + p[2] * q[1]) / 8,
+                          p[2] * q[2] / 8};  // x^4, x^3 y, x^2 y^2, x y^3, y^4
+  Vector6 quartic;
+  for(int a = 0; a < 6; ++a)
   {
-    // the heights less the fourth-order term of a surface whose shape
-    // operator is the fitted S everywhere, (x' S x)(x' S^2 x) / 8: exact on
-    // spheres (k^3 r^4 / 8) and cylinders, where a quadric alone reads the
-    // curvature too high by a relative (k R)^2 term (measured: a unit
-    // sphere at a radius of 16 spacings, 3.2% -> 0.24%). One step: the
-    // term is second order in what it corrects.
-    const double p[3] = {2 * coef(0), 2 * coef(1), 2 * coef(2)};  // x' S x = p0 x^2 + p1 x y + p2 y^2
-    const double q[3] = {p[0] * p[0] + coef(1) * coef(1), 2 * coef(1) * (p[0] + p[2]),
-                         coef(1) * coef(1) + p[2] * p[2]};       // x' S^2 x
-    const double term[5] = {p[0] * q[0] / 8, (p[0] * q[1] + p[1] * q[0]) / 8,
-                            (p[0] * q[2] + p[1] * q[1] + p[2] * q[0]) / 8, (p[1] * q[2] + p[2] * q[1]) / 8,
-                            p[2] * q[2] / 8};  // x^4, x^3 y, x^2 y^2, x y^3, y^4
-    Vector quartic(n);
-    for(int a = 0; a < n; ++a)
-    {
-      const int ia = height_monomials[a][0], ja = height_monomials[a][1];
-      double sum = 0;
-      for(int k = 0; k < 5; ++k)
-        sum += term[k] * m[ia + 4 - k][ja + k];
-      quartic(a) = power[ia + ja + 4] * sum;
-    }
-    coef = ldlt.solve(rhs - quartic);
+    const int ia = quadric_monomials[a][0], ja = quadric_monomials[a][1];
+    double sum = 0;
+    for(int k = 0; k < 5; ++k)
+      sum += term[k] * m[ia + 4 - k][ja + k];
+    quartic(a) = power[ia + ja + 4] * sum;
   }
+  const Vector6 coef = ldlt.solve(rhs - quartic);
   const double A = coef(0) / fade, B = coef(1) / fade, C = coef(2) / fade, D = coef(3), E = coef(4);
   if(error != nullptr)
   {
     // rows weighted by W: E[sum W r^2] = s^2 (sum W - tr(M^-1 M2)) and
     // var(m' coef) = s^2 m' M^-1 M2 M^-1 m, M = X' W X, M2 = X' W^2 X;
     // sum W r^2 = z' W z - 2 coef' X' W z + coef' M coef
-    Vector mean_row = Vector::Zero(n);
+    Vector6 mean_row = Vector6::Zero();
     mean_row(0) = mean_row(2) = 1;
-    const Vector mean_solution = ldlt.solve(mean_row);
+    const Vector6 mean_solution = ldlt.solve(mean_row);
     const double spread = mean_solution.dot(squared_weights * mean_solution);
     // of the least-squares solution (the correction is not fitted)
     const double residuals = (std::max)(0., s * s * zz - 2 * least_squares.dot(rhs)
                                               + least_squares.dot(normal_matrix * least_squares));
-    const double dof = weights - Matrix(ldlt.solve(squared_weights)).trace();
+    const double dof = weights - Matrix6(ldlt.solve(squared_weights)).trace();
     const double variance = dof > 0.5 ? residuals / dof : std::numeric_limits<double>::infinity();
     error->noise = std::sqrt(variance) * fade;
     error->degrees_of_freedom = dof;
