@@ -724,8 +724,8 @@ BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
 
 // The automatic neighborhood grows with the noise, from the data alone.
 // Without denoising, so that the noise the rule reads is the one the fits
-// see (measured: 3.1, 12.5 and 14.9 spacings; with the default denoising,
-// which passes the noise it measured before smoothing, 2.8, 22.6, 22.6 and
+// see (measured: 3.1, 8.8 and 8.9 spacings; with the default denoising,
+// which passes the noise it measured before smoothing, 2.83, 19, 22.6 and
 // 22.6 spacings at noise 0, 0.1, 0.3 and 0.5 on 20,000 points, see the
 // manual).
 BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)

@@ -116,7 +116,8 @@ public:
   /// finely: the median H error of the automatic choice on the ellipsoid at
   /// 100k points with noise 0.1 spacing, 1.49% against 1.52% with steps of
   /// the square root of 2, and on the torus 1.53% against 1.72%; up to 19
-  /// spacings only, 2.09% and 1.18%).
+  /// spacings only, 2.09% and 1.18%; measured when the candidates were
+  /// fitted by quartics, see the manual).
   static std::vector<double> automatic_radii() { return {2, 2.83, 4, 5.66, 8, 11.3, 13.45, 16, 19, 22.6}; }
 
   /// Parses a radius: `0.01` (model units), `4s` (spacings) or `auto`.
