@@ -163,10 +163,9 @@ inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbor>& 
 // The uncertainty of a quadric fit's mean curvature, from its residuals.
 struct Quadric_fit_error
 {
-  double mean_curvature = 0;      // standard error of H, the noise taken from this fit's residuals
   double noise = 0;               // standard deviation of the heights about the fit (model units)
   double degrees_of_freedom = 0;  // effective: weighted rows less what the fit absorbs
-  double per_noise = 0;           // standard error of H per unit of noise: mean_curvature / noise
+  double per_noise = 0;           // standard error of H per unit of noise
 };
 
 // Neighbors of a vertex as the quadric fit sees them, summed by shells:
@@ -356,7 +355,6 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     error->noise = std::sqrt(variance) * fade;
     error->degrees_of_freedom = dof;
     error->per_noise = std::sqrt(spread) / (fade * fade);
-    error->mean_curvature = std::sqrt(variance * spread) / fade;
   }
 
   // first and second fundamental forms of (x, y, z(x, y)) at the origin,

@@ -199,7 +199,6 @@ inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
     shape += (side * lambda) * a.first->shape;
     normal += (side * lambda) * a.first->normal;
     const double mean = w / total;
-    error.mean_curvature += mean * a.first->error.mean_curvature;
     error.noise += mean * a.first->error.noise;
     error.degrees_of_freedom += mean * a.first->error.degrees_of_freedom;
     error.per_noise += mean * a.first->error.per_noise;
