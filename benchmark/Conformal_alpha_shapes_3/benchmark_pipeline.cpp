@@ -5,7 +5,7 @@
 //
 //   benchmark_pipeline [--sizes 100000,300000,1000000] [--surfaces noisy,clean]
 //                      [--csv FILE] [--time-limit SECONDS] [--jet-max N] [--no-jet]
-//                      [--no-bunny] [--program PATH] [--tmp DIR] [FILE...]
+//                      [--no-bunny] [--threads N] [--program PATH] [--tmp DIR] [FILE...]
 //
 // Inputs: an ellipsoid with semi-axes 1, 0.7, 0.4 sampled uniformly in area
 // (cas3_analytic_surfaces.h), clean, and noisy (Gaussian noise of 0.1 x the
@@ -36,6 +36,10 @@
 //   program    (--program PATH) the conformal_curvature binary on the
 //              points written as .xyz, timed from outside (wall; processor
 //              time and peak memory from wait4); it also reads the text file.
+// --threads N limits TBB to N threads (tbb::global_control) in every child:
+// `--threads 1` runs the parallel stages serially in the same binary, for
+// the serial-versus-parallel speedup (the Delaunay build and jet fitting are
+// serial either way). Without TBB the option is refused.
 // Within a child, the peak of each stage comes from VmHWM after resetting it
 // (/proc/self/clear_refs 5) at the stage's start; "added" is that peak less
 // the resident memory when the child started (the input points). The job's
@@ -51,6 +55,10 @@
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
@@ -107,6 +115,7 @@ struct Options
   std::string tmp;
   double time_limit = 900;
   std::size_t jet_max = 3000000;
+  std::size_t threads = 0;  // 0: TBB's default
   bool jet = true, bunny = true;
 };
 
@@ -143,11 +152,12 @@ Options parse(int argc, char* argv[])
     else if(arg == "--jet-max") o.jet_max = std::stoul(value());
     else if(arg == "--no-jet") o.jet = false;
     else if(arg == "--no-bunny") o.bunny = false;
+    else if(arg == "--threads") o.threads = std::stoul(value());
     else if(arg == "--help" || arg == "-h")
     {
       std::cout << "benchmark_pipeline [--sizes N,N,...] [--surfaces noisy,clean] [--csv FILE]\n"
                    "  [--time-limit SECONDS] [--jet-max N] [--no-jet] [--no-bunny]\n"
-                   "  [--program PATH] [--tmp DIR] [FILE...]\n";
+                   "  [--threads N] [--program PATH] [--tmp DIR] [FILE...]\n";
       std::exit(EXIT_SUCCESS);
     }
     else if(arg.rfind("--", 0) == 0) { std::cerr << "unknown option " << arg << "\n"; std::exit(EXIT_FAILURE); }
@@ -603,6 +613,19 @@ void run(const Options& o, std::ofstream& csv, const Input& in)
 int main(int argc, char* argv[])
 {
   const Options o = parse(argc, argv);
+#ifdef CGAL_LINKED_WITH_TBB
+  // set before any child is forked, so that every child inherits it
+  std::unique_ptr<tbb::global_control> thread_limit;
+  if(o.threads > 0)
+    thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, o.threads);
+#else
+  if(o.threads > 0)
+  {
+    std::cerr << "--threads needs a build with TBB\n";
+    return EXIT_FAILURE;
+  }
+#endif
+  std::printf("threads: %s\n", o.threads > 0 ? std::to_string(o.threads).c_str() : "TBB's default");
   std::ofstream csv;
   if(!o.csv.empty())
   {

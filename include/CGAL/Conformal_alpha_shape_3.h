@@ -15,6 +15,7 @@
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/flood_fill.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/poles.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
@@ -27,6 +28,7 @@
 #include <CGAL/spatial_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -786,7 +788,7 @@ private:
   void insert_points(InputIterator first, InputIterator last)
   {
     clear();
-    const std::vector<Point> points(first, last);
+    std::vector<Point> points(first, last);
     double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
     for(size_type i = 0; i < points.size(); ++i)
       for(int d = 0; d < 3; ++d)
@@ -812,28 +814,31 @@ private:
                                   "1e-75, out of the range in which circumcenters can be computed in double; "
                                   "rescale the coordinates");
 
-    std::vector<size_type> order(points.size());
-    std::iota(order.begin(), order.end(), size_type(0));
-    typedef typename CGAL::Pointer_property_map<Point>::const_type Point_map;
-    if(!points.empty())  // make_property_map() reads points[0]
-      CGAL::spatial_sort(order.begin(), order.end(),
-                         Spatial_sort_traits_adapter_3<Gt, Point_map>(
-                           CGAL::make_property_map(points)));
+    // sorted with their indices beside them: sorting indices that point
+    // into the array was twice as slow (every comparison a random read)
+    typedef std::pair<Point, size_type> Point_and_index;
+    std::vector<Point_and_index> order;
+    order.reserve(points.size());
+    for(size_type i = 0; i < points.size(); ++i)
+      order.emplace_back(points[i], i);
+    std::vector<Point>().swap(points);
+    CGAL::spatial_sort(order.begin(), order.end(),
+                       Spatial_sort_traits_adapter_3<Gt, First_of_pair_property_map<Point_and_index> >());
 
-    m_input_vertices.assign(points.size(), Vertex_handle());
+    m_input_vertices.assign(order.size(), Vertex_handle());
     Vertex_handle hint;
-    for(size_type i : order)
+    for(const Point_and_index& p : order)
     {
       const size_type before = this->number_of_vertices();
-      hint = Dt::insert(points[i], hint);
+      hint = Dt::insert(p.first, hint);
       if(this->number_of_vertices() > before)
         hint->set_vertex_index(before);
-      m_input_vertices[i] = hint;
+      m_input_vertices[p.second] = hint;
     }
 
     if(this->dimension() < 3)
     {
-      const std::string why = "Conformal_alpha_shape_3: the " + std::to_string(points.size())
+      const std::string why = "Conformal_alpha_shape_3: the " + std::to_string(order.size())
         + " input points (" + std::to_string(this->number_of_vertices())
         + " distinct) span dimension " + std::to_string(this->dimension())
         + "; a conformal alpha shape needs 4 points that are not coplanar";
@@ -846,9 +851,9 @@ private:
     for(Vertex_handle v : m_input_vertices)
       ++m_input_offsets[v->vertex_index() + 1];
     std::partial_sum(m_input_offsets.begin(), m_input_offsets.end(), m_input_offsets.begin());
-    m_input_indices.resize(points.size());
+    m_input_indices.resize(m_input_vertices.size());
     std::vector<size_type> fill(m_input_offsets.begin(), m_input_offsets.end() - 1);
-    for(size_type i = 0; i < points.size(); ++i)
+    for(size_type i = 0; i < m_input_vertices.size(); ++i)
       m_input_indices[fill[m_input_vertices[i]->vertex_index()]++] = i;
   }
 
@@ -861,8 +866,8 @@ private:
   // vertex's power changes sign with the center's side. This is a filtered
   // orientation test, much cheaper than Side_of_bounded_sphere_3.
   // When a circumcenter or radius is not finite (or the radius is 0), the
-  // later predicates would run on NaN or infinity: the shape is cleared and
-  // the centers computed so far are returned, for the caller to throw.
+  // later predicates would run on NaN or infinity: the shape is cleared, for
+  // the caller to throw.
   std::vector<Point> store_cell_values()
   {
     const Gt& gt = this->geom_traits();
@@ -870,44 +875,55 @@ private:
     typename Gt::Compute_squared_distance_3 squared_distance = gt.compute_squared_distance_3_object();
     typename Gt::Orientation_3 orientation = gt.orientation_3_object();
 
-    std::vector<Point> centers(this->number_of_cells());
-    size_type index = 0;
+    std::vector<Cell_handle> cells;
+    cells.reserve(this->number_of_cells());
     for(Cell_handle c : this->all_cell_handles())
     {
-      c->set_cell_index(index++);
-      if(this->is_infinite(c))
-      {
-        c->set_alpha(infinity());
-        for(int i = 0; i < 4; ++i)
-          c->set_encroaches_facet(i, false);
-        continue;
-      }
-      if(!constructions_are_defined(c))
-      {
-        clear();
-        return centers;
-      }
-      const Point& center = centers[c->cell_index()] =
-        circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
-                     c->vertex(2)->point(), c->vertex(3)->point());
-      const double radius = std::sqrt(squared_distance(center, c->vertex(0)->point()));
-      if(!(std::isfinite(center.x()) && std::isfinite(center.y()) && std::isfinite(center.z())
-           && std::isfinite(radius) && radius > 0))
-      {
-        clear();
-        return centers;
-      }
-      c->set_alpha(radius);
-      for(int i = 0; i < 4; ++i)
-      {
-        // (v[i+1], v[i+2], v[i+3], v[i]) is a cyclic shift of a positive cell
-        const Orientation vertex_side = (i % 2 == 0) ? NEGATIVE : POSITIVE;
-        const Orientation center_side = orientation(c->vertex((i + 1) & 3)->point(),
-                                                    c->vertex((i + 2) & 3)->point(),
-                                                    c->vertex((i + 3) & 3)->point(), center);
-        c->set_encroaches_facet(i, center_side == -vertex_side);
-      }
+      c->set_cell_index(cells.size());
+      cells.push_back(c);
     }
+    // each cell's values are its own: computed on TBB's threads when
+    // available, with the same results
+    std::vector<Point> centers(cells.size());
+    std::atomic<bool> undefined(false);
+    Conformal_alpha_shapes_3::internal::for_each_index<Parallel_if_available_tag>(
+      cells.size(), []() { return 0; }, [&](std::size_t index, int) {
+        const Cell_handle c = cells[index];
+        if(this->is_infinite(c))
+        {
+          c->set_alpha(infinity());
+          for(int i = 0; i < 4; ++i)
+            c->set_encroaches_facet(i, false);
+          return;
+        }
+        if(!constructions_are_defined(c))
+        {
+          undefined = true;
+          return;
+        }
+        const Point& center = centers[index] =
+          circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
+                       c->vertex(2)->point(), c->vertex(3)->point());
+        const double radius = std::sqrt(squared_distance(center, c->vertex(0)->point()));
+        if(!(std::isfinite(center.x()) && std::isfinite(center.y()) && std::isfinite(center.z())
+             && std::isfinite(radius) && radius > 0))
+        {
+          undefined = true;
+          return;
+        }
+        c->set_alpha(radius);
+        for(int i = 0; i < 4; ++i)
+        {
+          // (v[i+1], v[i+2], v[i+3], v[i]) is a cyclic shift of a positive cell
+          const Orientation vertex_side = (i % 2 == 0) ? NEGATIVE : POSITIVE;
+          const Orientation center_side = orientation(c->vertex((i + 1) & 3)->point(),
+                                                      c->vertex((i + 2) & 3)->point(),
+                                                      c->vertex((i + 3) & 3)->point(), center);
+          c->set_encroaches_facet(i, center_side == -vertex_side);
+        }
+      });
+    if(undefined)
+      clear();
     return centers;
   }
 

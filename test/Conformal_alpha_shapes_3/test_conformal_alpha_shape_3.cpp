@@ -17,9 +17,14 @@
 
 #include "cas3_test_shapes.h"
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <list>
@@ -472,4 +477,69 @@ BOOST_AUTO_TEST_CASE(bundled_bunny_builds)
   const Cas cas(pts.begin(), pts.end());
   BOOST_TEST(cas.number_of_input_points() == n);
   BOOST_TEST(cas.alpha_at_quantile(0.1) < cas.alpha_at_quantile(0.5));
+}
+
+namespace {
+
+// Everything the construction stores, as bits: each cell's radius and
+// encroached facets, each vertex's local scale and pole (by cell index), in
+// the triangulation's order.
+std::vector<double> construction_bits(const Cas& cas)
+{
+  std::vector<double> bits;
+  for(auto c : cas.all_cell_handles())
+  {
+    bits.push_back(c->alpha());
+    bits.push_back(double(c->cell_index()));
+    for(int i = 0; i < 4; ++i)
+      bits.push_back(c->encroaches_facet(i) ? 1. : 0.);
+  }
+  for(auto v : cas.finite_vertex_handles())
+  {
+    bits.push_back(v->local_scale());
+    bits.push_back(double(v->pole_cell()->cell_index()));
+  }
+  return bits;
+}
+
+std::vector<double> construction_bits_on_one_thread(const std::vector<Point>& pts)
+{
+  std::vector<double> bits;
+  auto build = [&]() { bits = construction_bits(Cas(pts.begin(), pts.end())); };
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena(1).execute(build);
+#else
+  build();
+#endif
+  return bits;
+}
+
+} // namespace
+
+// The construction's passes over the cells run on TBB's threads when it is
+// available (in chunks of cells, merged): on one thread they give the same
+// bits. A lattice on the surface of a cube has many cells of equal radius, so
+// the order in which poles of equal distance are met is tested too.
+BOOST_AUTO_TEST_CASE(construction_on_one_thread_gives_the_same_bits)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  BOOST_TEST_MESSAGE("TBB: the construction uses threads");
+#else
+  BOOST_TEST_MESSAGE("no TBB: both constructions are serial");
+#endif
+  std::vector<Point> lattice;
+  const int n = 24;
+  for(int x = 0; x <= n; ++x)
+    for(int y = 0; y <= n; ++y)
+      for(int z = 0; z <= n; ++z)
+        if(x == 0 || y == 0 || z == 0 || x == n || y == n || z == n)
+          lattice.push_back(Point(x, y, z));
+  for(const std::vector<Point>& pts : {lattice, cas3_test::ellipsoid_sample<Point>(20000, 1.0, 0.7, 0.4, 0.01, 3)})
+  {
+    const std::vector<double> one_thread = construction_bits_on_one_thread(pts);
+    const std::vector<double> threads = construction_bits(Cas(pts.begin(), pts.end()));
+    BOOST_TEST(one_thread.size() > 10000u);
+    BOOST_TEST((one_thread.size() == threads.size()
+                && std::memcmp(one_thread.data(), threads.data(), threads.size() * sizeof(double)) == 0));
+  }
 }

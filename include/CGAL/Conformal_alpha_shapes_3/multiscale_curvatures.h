@@ -291,16 +291,21 @@ public:
     const Working_point_map working = working_points(surface);
     const auto vertex_index = get(CGAL::vertex_index, surface);
     const internal::Vertex_graph graph = internal::vertex_graph(surface, working, vertex_index);
-    const std::vector<std::vector<internal::Vertex_estimate> > estimates =
+    std::vector<std::vector<internal::Vertex_estimate> > estimates =
       internal::estimate_at_every_vertex<CGAL::Parallel_if_available_tag>(
         graph, internal::chen_wu_normals<CGAL::Parallel_if_available_tag>(surface, working, vertex_index), rules,
         estimator, m_noise.noise * m_noise.spacing);
+    if(!estimates.empty())
+      set_surface_properties(surface, estimates.back());
 
+    // each neighborhood's estimates are freed once its layer is made, so
+    // that the estimates and the layers are not all held at once
     Nearest_surface_point nearest(*this, surface, working);
     std::vector<std::vector<Point_curvature<Kernel> > > layers;
-    for(const std::vector<internal::Vertex_estimate>& by_surface_vertex : estimates)
+    for(std::vector<internal::Vertex_estimate>& by_surface_vertex : estimates)
     {
       const std::vector<Point_curvature<Kernel> > by_vertex = values_per_vertex(surface, by_surface_vertex, nearest);
+      std::vector<internal::Vertex_estimate>().swap(by_surface_vertex);
       std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
       for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
       {
@@ -311,8 +316,6 @@ public:
       }
       layers.push_back(std::move(per_point));
     }
-    if(!estimates.empty())
-      set_surface_properties(surface, estimates.back());
     return layers;
   }
 

@@ -246,7 +246,7 @@ private:
     const Vec3& p = m_graph.points[v];
     const std::vector<std::size_t>& found = ws.search.vertices();
     const std::vector<double>& squared_distance = ws.search.squared_distances();
-    const double squared_length = length * length;
+    const double squared_length = length * length, inverse_length = 1 / length;
     ws.shells.clear();
     ws.neighbors.clear();
     ws.shell_of.fill(-1);
@@ -272,7 +272,7 @@ private:
           shell = int(ws.shells.size());
           ws.shells.emplace_back();
         }
-        const Vec3 o = offset / length;
+        const Vec3 o = offset * inverse_length;
         ws.shells[std::size_t(shell)].add(o.dot(f.e1), o.dot(f.e2), o.dot(f.n), d2);
         end.shells = ws.shells.size();
         ++end.neighbors;

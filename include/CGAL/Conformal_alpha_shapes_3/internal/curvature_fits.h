@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -221,10 +223,19 @@ constexpr int quadric_monomials[6][2] = {{2, 0}, {1, 1}, {0, 2}, {1, 0}, {0, 1},
 // everything closer than L / 256, where the kernel is flat anyway.
 constexpr int quadric_shells_per_octave = 4;
 constexpr int number_of_quadric_shells = 16 * quadric_shells_per_octave;
+// The ratio's binary exponent and mantissa are read from its representation
+// as std::frexp() would give them (a library call, once per neighbor, was a
+// tenth of the fits' preparation); a subnormal ratio lands in shell 0 either
+// way.
 inline int quadric_shell_index(double squared_distance, double squared_length)
 {
-  int exponent = 0;
-  const double mantissa = std::frexp(squared_distance / squared_length, &exponent);  // in [0.5, 1)
+  const double ratio = squared_distance / squared_length;
+  std::uint64_t bits;
+  std::memcpy(&bits, &ratio, sizeof bits);
+  const int exponent = int((bits >> 52) & 0x7ff) - 1022;
+  bits = (bits & 0x000fffffffffffffull) | (std::uint64_t(1022) << 52);
+  double mantissa;  // in [0.5, 1)
+  std::memcpy(&mantissa, &bits, sizeof bits);
   const int quarter = mantissa < 0.5946 ? 0 : mantissa < 0.7071 ? 1 : mantissa < 0.8409 ? 2 : 3;
   return (std::max)(0, (std::min)(number_of_quadric_shells - 1,
                                   (exponent - 1) * quadric_shells_per_octave + quarter + number_of_quadric_shells));

@@ -4,8 +4,14 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_POLES_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_POLES_H
 
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+
+#include <CGAL/tags.h>
+
 #include <cmath>
 #include <cstddef>
+#include <iterator>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -30,6 +36,9 @@ struct Pole
 // Precondition: dimension 3 and every finite cell's circumradius stored with
 // `set_alpha()`: the distance from a vertex to the circumcenter of an incident
 // cell is that cell's circumradius.
+// Of cells at the same distance, the one of smallest index is taken, so
+// that the passes over the cells can run in chunks on TBB's threads (when
+// available) and be merged with the same result.
 template <class Dt>
 std::vector<Pole<typename Dt::Cell_handle> >
 compute_poles(const Dt& dt, const std::vector<typename Dt::Geom_traits::Point_3>& centers)
@@ -39,21 +48,48 @@ compute_poles(const Dt& dt, const std::vector<typename Dt::Geom_traits::Point_3>
   typedef typename Dt::Vertex_handle Vertex_handle;
   typedef typename Gt::Point_3       Point;
   typedef typename Gt::Vector_3      Vector;
+  typedef std::vector<Pole<Cell_handle> > Poles;
 
   const std::size_t nv = dt.number_of_vertices();
-  std::vector<Pole<Cell_handle> > farthest(nv), opposite(nv);
-  std::vector<Vector> u(nv, Vector(0, 0, 0));
-  std::vector<bool> on_hull(nv, false);
-
+  std::vector<Cell_handle> cells;
+  cells.reserve(dt.number_of_finite_cells());
   for(Cell_handle c : dt.finite_cell_handles())
-    for(int k = 0; k < 4; ++k)
-    {
-      Pole<Cell_handle>& f = farthest[c->vertex(k)->vertex_index()];
-      if(f.cell == Cell_handle() || c->alpha() > f.distance)
-        f = Pole<Cell_handle>{c, c->alpha()};
-    }
+    cells.push_back(c);
+  auto farther = [](const Pole<Cell_handle>& candidate, const Pole<Cell_handle>& pole) {
+    return pole.cell == Cell_handle() || candidate.distance > pole.distance
+           || (candidate.distance == pole.distance && candidate.cell->cell_index() < pole.cell->cell_index());
+  };
+  // the farthest pole of each vertex among the cells around it for which
+  // `counts(cell, vertex)`
+  auto farthest_cells = [&](auto counts) {
+    std::vector<Poles> partial = partial_results_in_chunks<Parallel_if_available_tag>(
+      cells.size(), [&]() { return Poles(nv); },
+      [&](std::size_t begin, std::size_t end, Poles& poles) {
+        for(std::size_t index = begin; index < end; ++index)
+        {
+          const Cell_handle c = cells[index];
+          const Pole<Cell_handle> candidate{c, c->alpha()};
+          for(int k = 0; k < 4; ++k)
+          {
+            Pole<Cell_handle>& pole = poles[c->vertex(k)->vertex_index()];
+            if(counts(c, c->vertex(k)) && farther(candidate, pole))
+              pole = candidate;
+          }
+        }
+      });
+    Poles& poles = partial.front();
+    for(std::size_t k = 1; k < partial.size(); ++k)
+      for(std::size_t v = 0; v < nv; ++v)
+        if(partial[k][v].cell != Cell_handle() && farther(partial[k][v], poles[v]))
+          poles[v] = partial[k][v];
+    return std::move(poles);
+  };
+
+  const Poles farthest = farthest_cells([](Cell_handle, Vertex_handle) { return true; });
 
   // unbounded Voronoi cells: mean outward normal of the incident hull facets
+  std::vector<Vector> u(nv, Vector(0, 0, 0));
+  std::vector<bool> on_hull(nv, false);
   typename Gt::Construct_cross_product_vector_3 cross_product =
     dt.geom_traits().construct_cross_product_vector_3_object();
   std::vector<Cell_handle> infinite_cells;
@@ -82,19 +118,9 @@ compute_poles(const Dt& dt, const std::vector<typename Dt::Geom_traits::Point_3>
     if(!on_hull[v->vertex_index()])
       u[v->vertex_index()] = centers[farthest[v->vertex_index()].cell->cell_index()] - v->point();
 
-  for(Cell_handle c : dt.finite_cell_handles())
-  {
-    const Point& center = centers[c->cell_index()];
-    for(int k = 0; k < 4; ++k)
-    {
-      const Vertex_handle v = c->vertex(k);
-      Pole<Cell_handle>& o = opposite[v->vertex_index()];
-      if((center - v->point()) * u[v->vertex_index()] < 0 &&
-         (o.cell == Cell_handle() || c->alpha() > o.distance))
-        o = Pole<Cell_handle>{c, c->alpha()};
-    }
-  }
-
+  Poles opposite = farthest_cells([&](Cell_handle c, Vertex_handle v) {
+    return (centers[c->cell_index()] - v->point()) * u[v->vertex_index()] < 0;
+  });
   for(std::size_t id = 0; id < nv; ++id)
     if(opposite[id].cell == Cell_handle())
       opposite[id] = farthest[id];

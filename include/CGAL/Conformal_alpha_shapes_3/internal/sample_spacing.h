@@ -4,6 +4,10 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SAMPLE_SPACING_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SAMPLE_SPACING_H
 
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+
+#include <CGAL/tags.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,45 +24,69 @@ namespace internal {
 // The local sample spacing at each finite vertex (by `v->vertex_index()`):
 // the length of its K-th shortest Delaunay edge (its longest one when it has
 // fewer). One pass over the finite cells, keeping the K shortest edges per
-// vertex; an edge seen from several cells is kept once.
+// vertex; an edge seen from several cells is kept once. Edges of equal
+// length are ordered by their other end, so that what is kept does not
+// depend on the order of the cells: the pass runs in chunks of cells on
+// TBB's threads when available, whose partial results are merged.
 template <std::size_t K, class Dt>
 std::vector<double> kth_shortest_edge_lengths(const Dt& dt)
 {
   // squared length and other end, in 8 bytes: the arrays are visited in
   // random order, so their size is what costs
   typedef std::pair<float, std::uint32_t> Edge_to;
+  typedef std::vector<std::array<Edge_to, K> > Shortest;
   const Edge_to none(std::numeric_limits<float>::infinity(), std::uint32_t(-1));
-  std::vector<std::array<Edge_to, K> > shortest(dt.number_of_vertices());
-  for(auto& s : shortest)
-    s.fill(none);
-  auto keep = [&](std::size_t v, const Edge_to& e) {
-    std::array<Edge_to, K>& s = shortest[v];
-    if(e.first > s[K - 1].first)
+  const std::size_t nv = dt.number_of_vertices();
+  auto keep = [&](std::array<Edge_to, K>& s, const Edge_to& e) {
+    if(!(e < s[K - 1]))
       return;
     for(const Edge_to& kept : s)
       if(kept.second == e.second)
         return;
     std::size_t k = K - 1;
-    for(; k > 0 && s[k - 1].first > e.first; --k)
+    for(; k > 0 && e < s[k - 1]; --k)
       s[k] = s[k - 1];
     s[k] = e;
   };
-  const auto squared_distance = dt.geom_traits().compute_squared_distance_3_object();
-  std::vector<typename Dt::Vertex_handle> vertex(shortest.size());  // by vertex index
+  std::vector<typename Dt::Cell_handle> cells;
+  cells.reserve(dt.number_of_finite_cells());
   for(const typename Dt::Cell_handle c : dt.finite_cell_handles())
-    for(int i = 0; i < 4; ++i)
-    {
-      vertex[c->vertex(i)->vertex_index()] = c->vertex(i);
-      for(int j = i + 1; j < 4; ++j)
+    cells.push_back(c);
+  const auto squared_distance = dt.geom_traits().compute_squared_distance_3_object();
+  std::vector<Shortest> partial = partial_results_in_chunks<Parallel_if_available_tag>(
+    cells.size(),
+    [&]() {
+      std::array<Edge_to, K> empty;
+      empty.fill(none);
+      return Shortest(nv, empty);
+    },
+    [&](std::size_t begin, std::size_t end, Shortest& shortest) {
+      for(std::size_t index = begin; index < end; ++index)
       {
-        const typename Dt::Vertex_handle p = c->vertex(i), q = c->vertex(j);
-        const float length = float(CGAL::to_double(squared_distance(p->point(), q->point())));
-        keep(p->vertex_index(), Edge_to(length, std::uint32_t(q->vertex_index())));
-        keep(q->vertex_index(), Edge_to(length, std::uint32_t(p->vertex_index())));
+        const typename Dt::Cell_handle c = cells[index];
+        for(int i = 0; i < 4; ++i)
+          for(int j = i + 1; j < 4; ++j)
+          {
+            const typename Dt::Vertex_handle p = c->vertex(i), q = c->vertex(j);
+            const float length = float(CGAL::to_double(squared_distance(p->point(), q->point())));
+            keep(shortest[p->vertex_index()], Edge_to(length, std::uint32_t(q->vertex_index())));
+            keep(shortest[q->vertex_index()], Edge_to(length, std::uint32_t(p->vertex_index())));
+          }
       }
-    }
-  std::vector<double> spacing(shortest.size());
-  for(std::size_t v = 0; v < shortest.size(); ++v)
+    });
+  std::vector<typename Dt::Cell_handle>().swap(cells);
+  Shortest& shortest = partial.front();
+  for(std::size_t k = 1; k < partial.size(); ++k)
+    for(std::size_t v = 0; v < nv; ++v)
+      for(const Edge_to& e : partial[k][v])
+        if(e.second != none.second)
+          keep(shortest[v], e);
+
+  std::vector<typename Dt::Vertex_handle> vertex(nv);  // by vertex index
+  for(const typename Dt::Vertex_handle v : dt.finite_vertex_handles())
+    vertex[v->vertex_index()] = v;
+  std::vector<double> spacing(nv);
+  for(std::size_t v = 0; v < nv; ++v)
   {
     std::size_t k = K - 1;
     while(k > 0 && shortest[v][k].second == none.second)
