@@ -43,7 +43,9 @@
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 
 #include <algorithm>
 #include <array>
@@ -52,6 +54,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -182,8 +185,12 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
     // a first normalization on all points, for the distances
     result.center = hygiene_detail::median_center(p, all);
     result.size_exponent = hygiene_detail::size_exponent(p, all, result.center);
-    std::vector<Point> q;
-    std::vector<std::size_t> near;  // indices of the points tested by distances
+    // the points tested by distances, with their indices, in the spatial
+    // order of the points: the tree's leaves and the searches then read
+    // memory in order (in the order of the input, which may be any, the
+    // time per point tripled from 100,000 to 3,000,000 points)
+    typedef std::pair<Point, std::size_t> Point_and_index;
+    std::vector<Point_and_index> tested;
     for(std::size_t i = 0; i < n; ++i)
     {
       const Point x = result.to_normalized(p[i]);
@@ -191,11 +198,20 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
       if(r > 1e50)
         result.is_outlier[i] = true;
       else
-      {
-        near.push_back(i);
-        q.push_back(x);
-      }
+        tested.emplace_back(x, i);
     }
+    CGAL::spatial_sort(tested.begin(), tested.end(),
+                       CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::First_of_pair_property_map<Point_and_index> >());
+    std::vector<Point> q;
+    std::vector<std::size_t> near;  // input index of q[i]
+    q.reserve(tested.size());
+    near.reserve(tested.size());
+    for(const Point_and_index& t : tested)
+    {
+      q.push_back(t.first);
+      near.push_back(t.second);
+    }
+    std::vector<Point_and_index>().swap(tested);
 
     // distance to the k-th nearest other point, and the k neighbors
     typedef CGAL::Search_traits_3<Kernel> Base_traits;
