@@ -481,7 +481,7 @@ int run(const Options& o)
             << " closed, " << report.number_of_open_parts() << " open), "
             << report.number_of_points_off_surface << " points off the surface\n";
     Analysis::Surface written = cas3::surface_at_input_points(surface, points);
-    const std::vector<std::vector<CAS3::Point_curvature<K> > > by_neighborhood =
+    std::vector<std::vector<CAS3::Point_curvature<K> > > by_neighborhood =
       analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);
     for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
     {
@@ -508,6 +508,9 @@ int run(const Options& o)
       summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
       progress("layer " + layer.label + ": curvature estimated");
       layers.push_back(std::move(layer));
+      // the layer keeps its values as floats: the doubles go now rather
+      // than after the last layer
+      std::vector<CAS3::Point_curvature<K> >().swap(by_neighborhood[r]);
     }
     if(!cloud.normals.empty())
     {

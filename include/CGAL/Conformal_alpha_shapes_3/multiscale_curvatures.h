@@ -304,16 +304,16 @@ public:
     std::vector<std::vector<Point_curvature<Kernel> > > layers;
     for(std::vector<internal::Vertex_estimate>& by_surface_vertex : estimates)
     {
-      const std::vector<Point_curvature<Kernel> > by_vertex = values_per_vertex(surface, by_surface_vertex, nearest);
-      std::vector<internal::Vertex_estimate>().swap(by_surface_vertex);
+      const std::vector<std::size_t> own = surface_vertex_of_shape_vertex(surface, by_surface_vertex);
       std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
       for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
       {
         Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
-        c = in_input_units(by_vertex[m_shape.input_vertex(i)->vertex_index()]);
+        c = in_input_units(value_at_vertex(m_shape.input_vertex(i), own, surface, by_surface_vertex, nearest));
         if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
           take_other_side(c);
       }
+      std::vector<internal::Vertex_estimate>().swap(by_surface_vertex);
       layers.push_back(std::move(per_point));
     }
     return layers;
@@ -451,15 +451,38 @@ private:
     std::vector<double> m_spacing;
   };
 
-  // The values of the fits on `surface` (`estimates`, by surface vertex
-  // index) for every vertex of the shape, in the working frame (see
-  // `estimate_curvatures()`).
-  std::vector<Point_curvature<Kernel> > values_per_vertex(const Surface& surface,
-                                                          const std::vector<internal::Vertex_estimate>& estimates,
-                                                          Nearest_surface_point& nearest_point) const
+  // For every vertex of the shape (by vertex index), the surface vertex
+  // whose estimate it takes: its own first; at a pinch (a vertex standing
+  // for several surface vertices), the first one whose estimate is defined;
+  // `no_surface_vertex` when none is.
+  static constexpr std::size_t no_surface_vertex = std::size_t(-1);
+  std::vector<std::size_t> surface_vertex_of_shape_vertex(const Surface& surface,
+                                                          const std::vector<internal::Vertex_estimate>& estimates) const
   {
     auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
-    auto estimate = [&](Surface_vertex v) -> const internal::Vertex_estimate& { return estimates[v.idx()]; };
+    std::vector<std::size_t> own(m_shape.number_of_vertices(), no_surface_vertex);
+    for(Surface_vertex v : surface.vertices())
+    {
+      std::size_t& o = own[m_shape.input_vertex(m_kept_index[input_index[v]])->vertex_index()];
+      if(o == no_surface_vertex && estimates[v.idx()].defined())
+        o = v.idx();
+    }
+    return own;
+  }
+
+  // The value of the fits on `surface` (`estimates`, by surface vertex
+  // index) at vertex `v` of the shape, in the working frame (see
+  // `estimate_curvatures()`): its own surface vertex's (`own`, from
+  // `surface_vertex_of_shape_vertex()`), or else interpolated at the
+  // nearest point of the surface. Made per point rather than kept per
+  // vertex: a layer of values for every vertex was the top of the
+  // curvature stage's memory.
+  Point_curvature<Kernel> value_at_vertex(typename Shape::Vertex_handle v, const std::vector<std::size_t>& own,
+                                          const Surface& surface,
+                                          const std::vector<internal::Vertex_estimate>& estimates,
+                                          Nearest_surface_point& nearest_point) const
+  {
+    auto estimate = [&](Surface_vertex u) -> const internal::Vertex_estimate& { return estimates[u.idx()]; };
     auto record = [&](Point_source source, double distance, double r, const Vector& n, double max_k, double min_k,
                       const Vector& max_d, const Vector& min_d) {
       Point_curvature<Kernel> c;
@@ -472,79 +495,67 @@ private:
       c.principal = Principal_curvatures_and_directions<Kernel>{max_k, min_k, max_d, min_d};
       return c;
     };
-    const Point_curvature<Kernel> none;  // NaN everywhere
+    Point_curvature<Kernel> c;  // NaN everywhere
 
-    // own vertices first; at a pinch, the first umbrella's defined estimate
-    std::vector<Point_curvature<Kernel> > by_vertex(m_shape.number_of_vertices(), none);
-    for(Surface_vertex v : surface.vertices())
+    const std::size_t own_vertex = own[v->vertex_index()];
+    if(own_vertex != no_surface_vertex)
     {
-      Point_curvature<Kernel>& c = by_vertex[m_shape.input_vertex(m_kept_index[input_index[v]])->vertex_index()];
-      const internal::Vertex_estimate& e = estimate(v);
-      if(c.source == NO_VALUE && e.defined())
-        c = record(SURFACE_VERTEX, 0, e.radius, to_vector(e.curvature.normal), e.curvature.k1, e.curvature.k2,
-                   to_vector(e.curvature.d1), to_vector(e.curvature.d2));
+      const internal::Vertex_estimate& e = estimates[own_vertex];
+      return record(SURFACE_VERTEX, 0, e.radius, to_vector(e.curvature.normal), e.curvature.k1, e.curvature.k2,
+                    to_vector(e.curvature.d1), to_vector(e.curvature.d2));
     }
 
-    // the others from the nearest point of the surface
+    // from the nearest point of the surface
     if(nearest_point.empty())
-      return by_vertex;
+      return c;
     const Working_point_map& working = nearest_point.working();
-    for(typename Shape::Finite_vertices_iterator vit = m_shape.finite_vertices_begin();
-        vit != m_shape.finite_vertices_end(); ++vit)
+    const Point& p = v->point();
+    const auto nearest = nearest_point.tree().closest_point_and_primitive(p);
+    c.distance = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)));
+    if(c.distance > far_from_surface() * nearest_point.spacing(v->vertex_index()))
+      return c;
+    // barycentric weights of the nearest point, over the corners with values
+    Surface_vertex corner[3];
+    int i = 0;
+    for(Surface_vertex u : vertices_around_face(surface.halfedge(nearest.second), surface))
+      corner[i++] = u;
+    double weight[3], total = 0;
+    for(int j = 0; j < 3; ++j)
     {
-      Point_curvature<Kernel>& c = by_vertex[vit->vertex_index()];
-      if(c.source != NO_VALUE)
-        continue;
-      const Point& p = vit->point();
-      const auto nearest = nearest_point.tree().closest_point_and_primitive(p);
-      c.distance = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)));
-      if(c.distance > far_from_surface() * nearest_point.spacing(vit->vertex_index()))
-        continue;
-      // barycentric weights of the nearest point, over the corners with values
-      Surface_vertex corner[3];
-      int i = 0;
-      for(Surface_vertex u : vertices_around_face(surface.halfedge(nearest.second), surface))
-        corner[i++] = u;
-      double weight[3], total = 0;
-      for(int j = 0; j < 3; ++j)
-      {
-        weight[j] = estimate(corner[j]).defined()
-          ? std::sqrt(CGAL::to_double(CGAL::squared_area(nearest.first, get(working, corner[(j + 1) % 3]),
-                                                         get(working, corner[(j + 2) % 3]))))
-          : 0.;
-        total += weight[j];
-      }
-      if(!(total > 0))  // a degenerate facet: its corners with values, alike
-        for(int j = 0; j < 3; ++j)
-          total += (weight[j] = estimate(corner[j]).defined() ? 1. : 0.);
-      if(!(total > 0))
-        continue;
-      internal::Vec3 n = internal::Vec3::Zero(), max_d = internal::Vec3::Zero();
-      double r = 0, max_k = 0, min_k = 0;
-      int reference = -1;
-      for(int j = 0; j < 3; ++j)
-      {
-        if(!(weight[j] > 0))
-          continue;
-        const double w = weight[j] / total;
-        const internal::Local_curvature& corner_curvature = estimate(corner[j]).curvature;
-        if(reference < 0)
-          reference = j;
-        n += w * corner_curvature.normal;
-        // a principal direction is a line: align signs before averaging
-        const internal::Vec3& reference_d1 = estimate(corner[reference]).curvature.d1;
-        max_d += (corner_curvature.d1.dot(reference_d1) < 0 ? -w : w) * corner_curvature.d1;
-        r += w * estimate(corner[j]).radius;
-        max_k += w * corner_curvature.k1;
-        min_k += w * corner_curvature.k2;
-      }
-      n.normalize();
-      max_d = (max_d - max_d.dot(n) * n).normalized();
-      const double distance = c.distance;
-      c = record(NEAREST_SURFACE_POINT, distance, r, to_vector(n), max_k, min_k, to_vector(max_d),
-                 to_vector(n.cross(max_d)));
+      weight[j] = estimate(corner[j]).defined()
+        ? std::sqrt(CGAL::to_double(CGAL::squared_area(nearest.first, get(working, corner[(j + 1) % 3]),
+                                                       get(working, corner[(j + 2) % 3]))))
+        : 0.;
+      total += weight[j];
     }
-    return by_vertex;
+    if(!(total > 0))  // a degenerate facet: its corners with values, alike
+      for(int j = 0; j < 3; ++j)
+        total += (weight[j] = estimate(corner[j]).defined() ? 1. : 0.);
+    if(!(total > 0))
+      return c;
+    internal::Vec3 n = internal::Vec3::Zero(), max_d = internal::Vec3::Zero();
+    double r = 0, max_k = 0, min_k = 0;
+    int reference = -1;
+    for(int j = 0; j < 3; ++j)
+    {
+      if(!(weight[j] > 0))
+        continue;
+      const double w = weight[j] / total;
+      const internal::Local_curvature& corner_curvature = estimate(corner[j]).curvature;
+      if(reference < 0)
+        reference = j;
+      n += w * corner_curvature.normal;
+      // a principal direction is a line: align signs before averaging
+      const internal::Vec3& reference_d1 = estimate(corner[reference]).curvature.d1;
+      max_d += (corner_curvature.d1.dot(reference_d1) < 0 ? -w : w) * corner_curvature.d1;
+      r += w * estimate(corner[j]).radius;
+      max_k += w * corner_curvature.k1;
+      min_k += w * corner_curvature.k2;
+    }
+    n.normalize();
+    max_d = (max_d - max_d.dot(n) * n).normalized();
+    return record(NEAREST_SURFACE_POINT, c.distance, r, to_vector(n), max_k, min_k, to_vector(max_d),
+                  to_vector(n.cross(max_d)));
   }
 
   internal::Normalized_input<Kernel> m_input;  // the working frame and the outliers (its points moved out)
