@@ -170,6 +170,49 @@ struct Quadric_fit_error
   double per_noise = 0;           // standard error of H per unit of noise
 };
 
+// The moments sum x^i y^j, i + j < 7, stored by pairs of consecutive
+// powers of x, (x^2q y^j, x^(2q+1) y^j), so that a neighbor's products are
+// added two at a time in one packet operation. The pairs are built in
+// registers from the point: a compiler left to vectorize the products of
+// a row of scalars stored them and read them back as pairs, which stalls
+// on every neighbor (this was three times slower).
+struct Shell_moments
+{
+  static constexpr int size = 7;
+  Eigen::Array2d pairs[size][4];  // [j][q]; entries with 2q + j > 6 unused
+
+  Shell_moments()
+  {
+    for(auto& row : pairs)
+      for(Eigen::Array2d& pair : row)
+        pair.setZero();
+  }
+
+  double operator()(int i, int j) const { return pairs[j][i / 2](i % 2); }
+
+  void add(double x, double y)
+  {
+    static const Eigen::Array2d one_and_zero(1, 0), zero_and_one(0, 1);
+    const double x2 = x * x;
+    Eigen::Array2d px[4];
+    px[0] = one_and_zero + zero_and_one * x;  // (1, x)
+    for(int q = 1; q < 4; ++q)
+      px[q] = px[q - 1] * x2;
+    double yj = 1;
+    for(int j = 0; j < size; ++j, yj *= y)
+      for(int q = 0; 2 * q + j < size; ++q)
+        pairs[j][q] += px[q] * yj;
+  }
+
+  // adds w times the moments of `other` of degree < `degree`
+  void add(double w, const Shell_moments& other, int degree = size)
+  {
+    for(int j = 0; j < degree; ++j)
+      for(int q = 0; 2 * q + j < degree; ++q)
+        pairs[j][q] += w * other.pairs[j][q];
+  }
+};
+
 // Neighbors of a vertex as the quadric fit sees them, summed by shells:
 // the neighbors in one shell (about the same distance from the vertex, see
 // `quadric_shell_index()`) share their sums, and a fit weighs the whole
@@ -184,30 +227,22 @@ struct Quadric_fit_error
 // the fourth order (`quadric_fit()`) needs those of degree 5 and 6.
 struct Quadric_shell
 {
-  static constexpr int size = 7;
-  double moments[size][size] = {};  // [i][j]: sum x^i y^j, i + j <= 6
-  double heights[3][3] = {};        // [i][j]: sum z x^i y^j, i + j <= 2
-  double squared_heights = 0;       // sum of z^2
+  Shell_moments moments;       // sum x^i y^j, i + j <= 6
+  double heights[3][3] = {};   // [i][j]: sum z x^i y^j, i + j <= 2
+  double squared_heights = 0;  // sum of z^2
   double count = 0;
   double squared_distances = 0;
 
   void add(double x, double y, double z, double squared_distance)
   {
-    // constant bounds, which the compiler unrolls: this is the inner loop
-    // of the curvature stage
-    double px[size], py[size];
-    px[0] = py[0] = 1;
-    for(int i = 1; i < size; ++i)
-    {
-      px[i] = px[i - 1] * x;
-      py[i] = py[i - 1] * y;
-    }
-    for(int i = 0; i < size; ++i)
-      for(int j = 0; j < size - i; ++j)
-        moments[i][j] += px[i] * py[j];
-    for(int i = 0; i <= 2; ++i)
-      for(int j = 0; j <= 2 - i; ++j)
-        heights[i][j] += z * px[i] * py[j];
+    moments.add(x, y);
+    const double zx = z * x, zy = z * y;
+    heights[0][0] += z;
+    heights[0][1] += zy;
+    heights[0][2] += zy * y;
+    heights[1][0] += zx;
+    heights[1][1] += zx * y;
+    heights[2][0] += zx * x;
     squared_heights += z * z;
     count += 1;
     squared_distances += squared_distance;
@@ -268,10 +303,12 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
 {
   if(neighbors < 5 || !(fade > 0))
     return false;
-  constexpr int size = Quadric_shell::size;
-  // the weighted moments (and squared-weighted ones for the error); the
-  // vertex's own row is (0, ..., 0, 1) with height 0 and weight 1
-  double m[size][size] = {}, m2[5][5] = {}, h[3][3] = {};
+  constexpr int size = Shell_moments::size;
+  // the weighted moments (and squared-weighted ones, of degree 4 or less,
+  // for the error); the vertex's own row is (0, ..., 0, 1) with height 0
+  // and weight 1
+  Shell_moments m, m2;
+  double h[3][3] = {};
   double zz = 0, weights = 1;
   const double reach2 = 2.25 * fade * fade;
   for(std::size_t t = 0; t < shell_count; ++t)
@@ -281,23 +318,19 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     if(!(u > 0))
       continue;
     const double w = (u * u) * (u * u);
-    for(int i = 0; i < size; ++i)
-      for(int j = 0; j < size - i; ++j)
-        m[i][j] += w * shell.moments[i][j];
+    m.add(w, shell.moments);
     for(int i = 0; i <= 2; ++i)
       for(int j = 0; j <= 2 - i; ++j)
         h[i][j] += w * shell.heights[i][j];
     zz += w * shell.squared_heights;
     if(error != nullptr)
     {
-      for(int i = 0; i <= 4; ++i)
-        for(int j = 0; j <= 4 - i; ++j)
-          m2[i][j] += (w * w) * shell.moments[i][j];
+      m2.add(w * w, shell.moments, 5);
       weights += w * shell.count;
     }
   }
-  m[0][0] += 1;
-  m2[0][0] += 1;
+  m.pairs[0][0](0) += 1;
+  m2.pairs[0][0](0) += 1;
 
   // from coordinates divided by `length` to coordinates divided by `fade`:
   // a monomial of degree k scales by s^k, s = length / fade, the height by s
@@ -317,8 +350,8 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     for(int b = 0; b < 6; ++b)
     {
       const int i = ia + quadric_monomials[b][0], j = ja + quadric_monomials[b][1];
-      normal_matrix(a, b) = power[i + j] * m[i][j];
-      squared_weights(a, b) = power[i + j] * m2[i][j];
+      normal_matrix(a, b) = power[i + j] * m(i, j);
+      squared_weights(a, b) = power[i + j] * m2(i, j);
     }
   }
   const Eigen::LDLT<Matrix6> ldlt(normal_matrix);
@@ -344,7 +377,7 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     const int ia = quadric_monomials[a][0], ja = quadric_monomials[a][1];
     double sum = 0;
     for(int k = 0; k < 5; ++k)
-      sum += term[k] * m[ia + 4 - k][ja + k];
+      sum += term[k] * m(ia + 4 - k, ja + k);
     quartic(a) = power[ia + ja + 4] * sum;
   }
   const Vector6 coef = ldlt.solve(rhs - quartic);

@@ -133,19 +133,21 @@ public:
     for(std::size_t level = 0; level < radii.size(); ++level)
       m_squared_radii[level] = radii[level] * radii[level];
     const Vec3& p = g.points[v];
-    m_pending[0].push_back(Entry{v, 0});
+    m_pending[0].vertices.push_back(v);
+    m_pending[0].squared_distances.push_back(0);
     for(std::size_t level = 0; level < radii.size(); ++level)
     {
       // the pending list of this level grows while it is walked
-      for(std::size_t k = 0; k < m_pending[level].size(); ++k)
+      const Pending& pending = m_pending[level];
+      for(std::size_t k = 0; k < pending.vertices.size(); ++k)
       {
-        const Entry entry = m_pending[level][k];
-        if(entry.vertex != v)
+        const std::size_t u = pending.vertices[k];
+        if(u != v)
         {
-          m_found.push_back(entry.vertex);
-          m_squared_distance.push_back(entry.squared_distance);
+          m_found.push_back(u);
+          m_squared_distance.push_back(pending.squared_distances[k]);
         }
-        for(std::size_t e = g.first[entry.vertex]; e < g.first[entry.vertex + 1]; ++e)
+        for(std::size_t e = g.first[u]; e < g.first[u + 1]; ++e)
         {
           const std::size_t w = g.adjacent[e];
           if(!mark(w))
@@ -155,7 +157,10 @@ public:
           while(at < radii.size() && d2 > m_squared_radii[at])
             ++at;
           if(at < radii.size())  // else outside every ball
-            m_pending[at].push_back(Entry{w, d2});
+          {
+            m_pending[at].vertices.push_back(w);
+            m_pending[at].squared_distances.push_back(d2);
+          }
         }
       }
       m_end[level] = m_found.size();
@@ -199,8 +204,11 @@ private:
     m_squared_distance.clear();
     m_end.assign(levels, 0);
     m_pending.resize((std::max)(levels, m_pending.size()));
-    for(std::vector<Entry>& pending : m_pending)
-      pending.clear();
+    for(Pending& pending : m_pending)
+    {
+      pending.vertices.clear();
+      pending.squared_distances.clear();
+    }
     m_stamp[v] = m_current;
   }
 
@@ -221,12 +229,15 @@ private:
   std::vector<double> m_squared_distance;
   std::vector<std::size_t> m_end;
   std::vector<double> m_squared_radii;
-  struct Entry
+  // Reached, not yet walked. Two arrays rather than one of pairs: a pair
+  // built from two registers was stored and read back whole, which stalls
+  // (a fifth of the search's time).
+  struct Pending
   {
-    std::size_t vertex;
-    double squared_distance;
+    std::vector<std::size_t> vertices;
+    std::vector<double> squared_distances;
   };
-  std::vector<std::vector<Entry> > m_pending;  // by level: reached, not yet walked
+  std::vector<Pending> m_pending;  // by level
 };
 
 } // namespace internal
