@@ -50,11 +50,9 @@
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/Color.h>
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
-#include <CGAL/Surface_mesh/IO/PLY.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -62,7 +60,6 @@
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
-#include "cas3_curvature_colors.h"
 #include "cas3_curvature_output.h"
 #include "cas3_read_point_cloud.h"
 
@@ -438,13 +435,8 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
     return std::to_string(report.number_of_faces) + " faces, " + std::to_string(report.number_of_parts)
            + " parts, " + std::to_string(report.number_of_points_off_surface) + " points off";
   });
-  Analysis::Surface written;
   std::vector<cas3::Layer> layers;
   const std::vector<CAS3::Neighborhood> neighborhoods = CAS3::default_neighborhoods();
-  m.stage("program: surface in input units", "stage", [&] {
-    written = cas3::surface_at_input_points(surface, points);
-    return std::string();
-  });
   std::vector<std::vector<CAS3::Point_curvature<K> > > curvatures;
   m.stage("estimate_curvatures (" + std::to_string(neighborhoods.size()) + " neighborhoods)", "stage", [&] {
     curvatures = analysis->estimate_curvatures(surface, neighborhoods, CAS3::QUADRIC_FIT);
@@ -453,23 +445,19 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
   for(std::size_t r = 0; r < neighborhoods.size(); ++r)
   {
     const CAS3::Neighborhood& neighborhood = neighborhoods[r];
-    m.stage("program: layer " + neighborhood.label() + " (summary, surface properties)", "stage", [&] {
+    m.stage("program: layer " + neighborhood.label() + " (values in float, summary)", "stage", [&] {
       cas3::Layer layer(curvatures[r]);
       layer.label = neighborhood.label();
       layer.description = "a = " + number(a) + " (auto), " + neighborhood.label();
-      cas3::add_layer_to_surface(written, layer);
       layers.push_back(std::move(layer));
       return cas3::summary_row(neighborhood.label(), a, curvatures[r]);
     });
   }
   m.stage("write surface PLY (binary, 5 layers, colors)", "stage", [&] {
-    auto color = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
-    cas3::color_by_curvature(written,
-      written.property_map<Analysis::Surface_vertex, float>("v:H_" + layers.front().label).first, color);
     std::ofstream ply(dir / "surface_auto.ply", std::ios::binary);
-    CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
-    if(!CGAL::IO::write_PLY(ply, written) || !ply) throw std::runtime_error("cannot write the surface PLY");
+    cas3::write_surface(ply, surface, points, layers.data(), layers.data() + layers.size());
     ply.close();
+    if(!ply) throw std::runtime_error("cannot write the surface PLY");
     return std::to_string(fs::file_size(dir / "surface_auto.ply") >> 20) + " MiB";
   });
   m.stage("write point cloud PLY (binary)", "stage", [&] {

@@ -7,10 +7,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/Color.h>
-#include <CGAL/Surface_mesh/IO/PLY.h>
 
-#include "cas3_curvature_colors.h"
 #include "cas3_curvature_output.h"
 #include "cas3_read_point_cloud.h"
 
@@ -480,7 +477,6 @@ int run(const Options& o)
     summary << "scale " << scale.label() << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
             << " closed, " << report.number_of_open_parts() << " open), "
             << report.number_of_points_off_surface << " points off the surface\n";
-    Analysis::Surface written = cas3::surface_at_input_points(surface, points);
     std::vector<std::vector<CAS3::Point_curvature<K> > > by_neighborhood =
       analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);
     for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
@@ -498,7 +494,6 @@ int run(const Options& o)
       else
         description << "radius " << analysis->radius(neighborhood);
       layer.description = description.str();
-      cas3::add_layer_to_surface(written, layer);
       if(o.csv)
       {
         append_csv_rows(csv, points, a, neighborhood, curvatures, is_outlier);
@@ -532,16 +527,12 @@ int run(const Options& o)
                     scale.label().c_str(), compared == 0 ? 0.0 : 100.0 * double(agree) / double(compared));
       summary << line;
     }
-    // colors: the ramp of the first layer's mean curvature
-    auto color = written.add_property_map<Analysis::Surface_vertex, CGAL::IO::Color>("v:color").first;
-    cas3::color_by_curvature(written,
-      written.property_map<Analysis::Surface_vertex, float>("v:H_" + layers[layers.size() - o.neighborhoods.size()].label).first,
-      color);
     std::ofstream ply = output.open("surface_" + file_label(scale) + ".ply", true);
-    CGAL::IO::set_mode(ply, CGAL::IO::BINARY);
-    if(!CGAL::IO::write_PLY(ply, written) || !ply)
-      throw Failure("cannot write into the output directory " + o.output);
+    cas3::write_surface(ply, surface, points, layers.data() + (layers.size() - o.neighborhoods.size()),
+                        layers.data() + layers.size());
     ply.close();
+    if(!ply)
+      throw Failure("cannot write into the output directory " + o.output);
     // test hook: a crash (an abort, as a failed assertion) after the first
     // file, to check the clean-up
     if(std::getenv("CONFORMAL_CURVATURE_TEST_CRASH") != nullptr)

@@ -1,11 +1,14 @@
 // What conformal_curvature writes per layer (a scale and a neighborhood):
 // the values per input point, the binary PLY point cloud that holds them,
-// and the same values as float properties of the surface PLY. The
+// and the surface PLY with the same values at its vertices. The
 // benchmark of the default job writes through the same code.
 #ifndef CAS3_CURVATURE_OUTPUT_H
 #define CAS3_CURVATURE_OUTPUT_H
 
+#include "cas3_curvature_colors.h"
+
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -115,30 +118,79 @@ void write_point_cloud(std::ostream& out, const std::vector<Point>& points, cons
   }
 }
 
-// A copy of the surface with its vertices at their input points (the
-// library's surface lies at the smoothed positions); layers add their values.
+// The surface of one scale: binary little-endian PLY, each vertex at its
+// input point (the library's surface lies at the smoothed positions) with
+// its input index, the float values of the scale's layers [first, last) and
+// the color of the first layer's H, then the triangles. Written straight
+// from the layers: copying the surface and adding a property map per value
+// took twice the memory of the values and more time than the write.
 template <class Surface, class Point>
-Surface surface_at_input_points(const Surface& smoothed, const std::vector<Point>& points)
+void write_surface(std::ostream& out, const Surface& surface, const std::vector<Point>& points,
+                   const Layer* first, const Layer* last)
 {
-  Surface surface = smoothed;
-  auto index = surface.template property_map<typename Surface::Vertex_index, std::size_t>("v:input_index").first;
-  for(auto v : surface.vertices())
-    surface.point(v) = points[index[v]];
-  return surface;
-}
+  using output_detail::put_little_endian;
+  typedef typename Surface::Vertex_index Vertex;
+  const auto input_index = surface.template property_map<Vertex, std::size_t>("v:input_index").first;
+  std::vector<std::uint32_t> number(surface.num_vertices());  // by vertex, in the order written
+  std::uint32_t next = 0;
+  for(Vertex v : surface.vertices())
+    number[v] = next++;
 
-// Adds the values of a layer as float vertex properties "v:<value>_<label>".
-template <class Surface>
-void add_layer_to_surface(Surface& surface, const Layer& layer)
-{
-  auto index = surface.template property_map<typename Surface::Vertex_index, std::size_t>("v:input_index").first;
-  for(int j = 0; j < Layer::number_of_values; ++j)
+  struct First_layer_H
   {
-    auto map = surface.template add_property_map<typename Surface::Vertex_index, float>(
-                        std::string("v:") + Layer::value_names()[j] + "_" + layer.label).first;
-    for(auto v : surface.vertices())
-      map[v] = layer.values[index[v] * Layer::number_of_values + std::size_t(j)];
+    const Layer* layer;
+    const decltype(input_index)* index;
+    float operator[](Vertex v) const { return layer->values[(*index)[v] * Layer::number_of_values + 3]; }
+  };
+  std::vector<CGAL::IO::Color> color(surface.num_vertices());
+  if(first != last)
+    color_by_curvature(surface, First_layer_H{first, &input_index}, color);
+
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\n"
+         << "comment conformal_curvature: a surface, its vertices at their input points, values in input units\n";
+  for(const Layer* layer = first; layer != last; ++layer)
+    header << "comment layer " << layer->label << ": " << layer->description << "\n";
+  header << "element vertex " << surface.number_of_vertices() << "\n"
+         << "property double x\nproperty double y\nproperty double z\nproperty uint input_index\n";
+  for(const Layer* layer = first; layer != last; ++layer)
+    for(int j = 0; j < Layer::number_of_values; ++j)
+      header << "property float " << Layer::value_names()[j] << "_" << layer->label << "\n";
+  header << "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+         << "element face " << surface.number_of_faces() << "\n"
+         << "property list uchar int vertex_indices\nend_header\n";
+  out << header.str();
+  std::string block;
+  auto flush = [&](bool last_one) {
+    if(block.size() > (1u << 20) || last_one)
+    {
+      out.write(block.data(), std::streamsize(block.size()));
+      block.clear();
+    }
+  };
+  for(Vertex v : surface.vertices())
+  {
+    const std::size_t i = input_index[v];
+    put_little_endian(block, double(points[i].x()));
+    put_little_endian(block, double(points[i].y()));
+    put_little_endian(block, double(points[i].z()));
+    put_little_endian(block, std::uint32_t(i));
+    for(const Layer* layer = first; layer != last; ++layer)
+      for(int j = 0; j < Layer::number_of_values; ++j)
+        put_little_endian(block, layer->values[i * Layer::number_of_values + std::size_t(j)]);
+    const CGAL::IO::Color& c = color[v];
+    for(unsigned char channel : {c.red(), c.green(), c.blue(), c.alpha()})
+      put_little_endian(block, std::uint8_t(channel));
+    flush(false);
   }
+  for(auto f : surface.faces())
+  {
+    put_little_endian(block, std::uint8_t(3));
+    for(Vertex v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+      put_little_endian(block, std::int32_t(number[v]));
+    flush(false);
+  }
+  flush(true);
 }
 
 // The 5%, 50% and 95% quantiles of the finite values, for the summaries.
@@ -148,9 +200,12 @@ inline std::string quantiles(std::vector<double> values)
                values.end());
   if(values.empty())
     return "            -            -            -";
-  std::sort(values.begin(), values.end());
   char text[64];
-  auto at = [&](double q) { return values[std::size_t(q * double(values.size() - 1))]; };
+  auto at = [&](double q) {
+    const auto nth = values.begin() + std::ptrdiff_t(q * double(values.size() - 1));
+    std::nth_element(values.begin(), nth, values.end());
+    return *nth;
+  };
   std::snprintf(text, sizeof text, " %12.4g %12.4g %12.4g", at(0.05), at(0.5), at(0.95));
   return text;
 }
