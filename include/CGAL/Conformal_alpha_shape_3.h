@@ -239,7 +239,9 @@ public:
       get_parameter(np, CAS3::internal_np_cas3::local_scale_estimator), CAS3::NOISE_ROBUST_POLE_DISTANCE);
 
     insert_points(first, last);
-    std::vector<Point> centers = store_cell_values();
+    // the passes below run over the cells by index: listed once
+    const std::vector<Cell_handle> cells = index_cells();
+    std::vector<Point> centers = store_cell_values(cells);
     if(!centers.empty() && this->number_of_vertices() == 0)
     {
       // store_cell_values() found a construction out of double's range
@@ -249,7 +251,7 @@ public:
                                   "rounding, of very different sizes); normalize the coordinates and "
                                   "remove far outliers");
     }
-    const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, centers);
+    const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, cells, centers);
     for(Vertex_handle v : this->finite_vertex_handles())
     {
       v->set_pole_cell(poles[v->vertex_index()].cell);
@@ -262,7 +264,7 @@ public:
     }
     else if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
     {
-      const std::vector<double> floors = CAS3::internal::local_scale_floors(*this);
+      const std::vector<double> floors = CAS3::internal::local_scale_floors(*this, cells);
       for(Vertex_handle v : this->finite_vertex_handles())
         v->set_local_scale((std::max)(v->local_scale(), floors[v->vertex_index()]));
     }
@@ -857,7 +859,20 @@ private:
       m_input_indices[fill[m_input_vertices[i]->vertex_index()]++] = i;
   }
 
-  // One pass over the cells stores each cell's radius and which of its facets
+  // Every cell, its index set to its place in the list.
+  std::vector<Cell_handle> index_cells()
+  {
+    std::vector<Cell_handle> cells;
+    cells.reserve(this->number_of_cells());
+    for(Cell_handle c : this->all_cell_handles())
+    {
+      c->set_cell_index(cells.size());
+      cells.push_back(c);
+    }
+    return cells;
+  }
+
+  // One pass over the cells (by index) stores each cell's radius and which of its facets
   // its vertices encroach, and returns the circumcenters (indexed by cell
   // index) for the poles. The vertex opposite to a facet lies strictly inside
   // the facet's smallest circumscribing ball exactly when the cell's
@@ -868,20 +883,13 @@ private:
   // When a circumcenter or radius is not finite (or the radius is 0), the
   // later predicates would run on NaN or infinity: the shape is cleared, for
   // the caller to throw.
-  std::vector<Point> store_cell_values()
+  std::vector<Point> store_cell_values(const std::vector<Cell_handle>& cells)
   {
     const Gt& gt = this->geom_traits();
     typename Gt::Construct_circumcenter_3 circumcenter = gt.construct_circumcenter_3_object();
     typename Gt::Compute_squared_distance_3 squared_distance = gt.compute_squared_distance_3_object();
     typename Gt::Orientation_3 orientation = gt.orientation_3_object();
 
-    std::vector<Cell_handle> cells;
-    cells.reserve(this->number_of_cells());
-    for(Cell_handle c : this->all_cell_handles())
-    {
-      c->set_cell_index(cells.size());
-      cells.push_back(c);
-    }
     // each cell's values are its own: computed on TBB's threads when
     // available, with the same results
     std::vector<Point> centers(cells.size());

@@ -438,8 +438,12 @@ private:
     double spacing(std::size_t vertex_index)
     {
       if(m_spacing.empty())
-        m_spacing = internal::kth_shortest_edge_lengths<internal::Local_scale_policy::spacing_edge_rank>(
-          m_analysis.m_shape);
+      {
+        const Shape& shape = m_analysis.m_shape;
+        const std::vector<typename Shape::Cell_handle> cells(shape.all_cell_handles().begin(),
+                                                             shape.all_cell_handles().end());
+        m_spacing = internal::kth_shortest_edge_lengths<internal::Local_scale_policy::spacing_edge_rank>(shape, cells);
+      }
       return m_spacing[vertex_index];
     }
 

@@ -32,7 +32,8 @@ struct Pole
 };
 
 // Computes the pole of every finite vertex, indexed by `v->vertex_index()`,
-// from the circumcenters of the finite cells (indexed by `c->cell_index()`).
+// from `cells` (every cell of `dt`, by `c->cell_index()`) and the
+// circumcenters of the finite ones (indexed the same way).
 // Precondition: dimension 3 and every finite cell's circumradius stored with
 // `set_alpha()`: the distance from a vertex to the circumcenter of an incident
 // cell is that cell's circumradius.
@@ -41,7 +42,8 @@ struct Pole
 // available) and be merged with the same result.
 template <class Dt>
 std::vector<Pole<typename Dt::Cell_handle> >
-compute_poles(const Dt& dt, const std::vector<typename Dt::Geom_traits::Point_3>& centers)
+compute_poles(const Dt& dt, const std::vector<typename Dt::Cell_handle>& cells,
+              const std::vector<typename Dt::Geom_traits::Point_3>& centers)
 {
   typedef typename Dt::Geom_traits   Gt;
   typedef typename Dt::Cell_handle   Cell_handle;
@@ -51,10 +53,6 @@ compute_poles(const Dt& dt, const std::vector<typename Dt::Geom_traits::Point_3>
   typedef std::vector<Pole<Cell_handle> > Poles;
 
   const std::size_t nv = dt.number_of_vertices();
-  std::vector<Cell_handle> cells;
-  cells.reserve(dt.number_of_finite_cells());
-  for(Cell_handle c : dt.finite_cell_handles())
-    cells.push_back(c);
   auto farther = [](const Pole<Cell_handle>& candidate, const Pole<Cell_handle>& pole) {
     return pole.cell == Cell_handle() || candidate.distance > pole.distance
            || (candidate.distance == pole.distance && candidate.cell->cell_index() < pole.cell->cell_index());
@@ -68,6 +66,8 @@ compute_poles(const Dt& dt, const std::vector<typename Dt::Geom_traits::Point_3>
         for(std::size_t index = begin; index < end; ++index)
         {
           const Cell_handle c = cells[index];
+          if(dt.is_infinite(c))
+            continue;
           const Pole<Cell_handle> candidate{c, c->alpha()};
           for(int k = 0; k < 4; ++k)
           {

@@ -23,13 +23,14 @@ namespace internal {
 
 // The local sample spacing at each finite vertex (by `v->vertex_index()`):
 // the length of its K-th shortest Delaunay edge (its longest one when it has
-// fewer). One pass over the finite cells, keeping the K shortest edges per
-// vertex; an edge seen from several cells is kept once. Edges of equal
-// length are ordered by their other end, so that what is kept does not
-// depend on the order of the cells: the pass runs in chunks of cells on
-// TBB's threads when available, whose partial results are merged.
+// fewer). One pass over `cells` (every cell of `dt`; the infinite ones are
+// skipped), keeping the K shortest edges per vertex; an edge seen from
+// several cells is kept once. Edges of equal length are ordered by their
+// other end, so that what is kept does not depend on the order of the
+// cells: the pass runs in chunks of cells on TBB's threads when available,
+// whose partial results are merged.
 template <std::size_t K, class Dt>
-std::vector<double> kth_shortest_edge_lengths(const Dt& dt)
+std::vector<double> kth_shortest_edge_lengths(const Dt& dt, const std::vector<typename Dt::Cell_handle>& cells)
 {
   // squared length and other end, in 8 bytes: the arrays are visited in
   // random order, so their size is what costs
@@ -48,10 +49,6 @@ std::vector<double> kth_shortest_edge_lengths(const Dt& dt)
       s[k] = s[k - 1];
     s[k] = e;
   };
-  std::vector<typename Dt::Cell_handle> cells;
-  cells.reserve(dt.number_of_finite_cells());
-  for(const typename Dt::Cell_handle c : dt.finite_cell_handles())
-    cells.push_back(c);
   const auto squared_distance = dt.geom_traits().compute_squared_distance_3_object();
   std::vector<Shortest> partial = partial_results_in_chunks<Parallel_if_available_tag>(
     cells.size(),
@@ -64,6 +61,8 @@ std::vector<double> kth_shortest_edge_lengths(const Dt& dt)
       for(std::size_t index = begin; index < end; ++index)
       {
         const typename Dt::Cell_handle c = cells[index];
+        if(dt.is_infinite(c))
+          continue;
         for(int i = 0; i < 4; ++i)
           for(int j = i + 1; j < 4; ++j)
           {
@@ -74,7 +73,6 @@ std::vector<double> kth_shortest_edge_lengths(const Dt& dt)
           }
       }
     });
-  std::vector<typename Dt::Cell_handle>().swap(cells);
   Shortest& shortest = partial.front();
   for(std::size_t k = 1; k < partial.size(); ++k)
     for(std::size_t v = 0; v < nv; ++v)
@@ -116,11 +114,11 @@ struct Local_scale_policy
 };
 
 // The floor of the local scale of each finite vertex (by `v->vertex_index()`)
-// under `Local_scale_policy`.
+// under `Local_scale_policy`; `cells` as for kth_shortest_edge_lengths().
 template <class Dt>
-std::vector<double> local_scale_floors(const Dt& dt)
+std::vector<double> local_scale_floors(const Dt& dt, const std::vector<typename Dt::Cell_handle>& cells)
 {
-  std::vector<double> floors = kth_shortest_edge_lengths<Local_scale_policy::spacing_edge_rank>(dt);
+  std::vector<double> floors = kth_shortest_edge_lengths<Local_scale_policy::spacing_edge_rank>(dt, cells);
   for(double& f : floors)
     f *= Local_scale_policy::spacing_floor_factor;
   return floors;
