@@ -872,14 +872,15 @@ private:
     return cells;
   }
 
-  // One pass over the cells (by index) stores each cell's radius and which of its facets
-  // its vertices encroach, and returns the circumcenters (indexed by cell
-  // index) for the poles. The vertex opposite to a facet lies strictly inside
-  // the facet's smallest circumscribing ball exactly when the cell's
-  // circumcenter lies strictly beyond the facet's plane: the centers of the
-  // balls through the facet's circle lie on one line, and the opposite
-  // vertex's power changes sign with the center's side. This is a filtered
-  // orientation test, much cheaper than Side_of_bounded_sphere_3.
+  // One pass over the cells (by index) stores each cell's radius and which
+  // of its facets its vertices encroach, and returns the circumcenters
+  // (indexed by cell index) for the poles. The vertex opposite to a facet
+  // lies strictly inside the facet's smallest circumscribing ball exactly
+  // when the cell's circumcenter lies strictly beyond the facet's plane: the
+  // centers of the balls through the facet's circle lie on one line, and
+  // the opposite vertex's power changes sign with the center's side. This
+  // is a filtered orientation test, much cheaper than
+  // Side_of_bounded_sphere_3.
   // When a circumcenter or radius is not finite (or the radius is 0), the
   // later predicates would run on NaN or infinity: the shape is cleared, for
   // the caller to throw.
