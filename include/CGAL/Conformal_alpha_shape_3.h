@@ -828,6 +828,10 @@ private:
                        Spatial_sort_traits_adapter_3<Gt, First_of_pair_property_map<Point_and_index> >());
 
     m_input_vertices.assign(order.size(), Vertex_handle());
+    // the vertex index of each input point, kept beside its handle: the
+    // rows below read them in input order, and reading them through the
+    // handles was a cache miss each
+    std::vector<size_type> vertex_index_of_input(order.size());
     Vertex_handle hint;
     for(const Point_and_index& p : order)
     {
@@ -836,6 +840,7 @@ private:
       if(this->number_of_vertices() > before)
         hint->set_vertex_index(before);
       m_input_vertices[p.second] = hint;
+      vertex_index_of_input[p.second] = hint->vertex_index();
     }
 
     if(this->dimension() < 3)
@@ -850,13 +855,13 @@ private:
 
     // input indices of each vertex, as compressed rows
     m_input_offsets.assign(this->number_of_vertices() + 1, 0);
-    for(Vertex_handle v : m_input_vertices)
-      ++m_input_offsets[v->vertex_index() + 1];
+    for(size_type v : vertex_index_of_input)
+      ++m_input_offsets[v + 1];
     std::partial_sum(m_input_offsets.begin(), m_input_offsets.end(), m_input_offsets.begin());
     m_input_indices.resize(m_input_vertices.size());
     std::vector<size_type> fill(m_input_offsets.begin(), m_input_offsets.end() - 1);
-    for(size_type i = 0; i < m_input_vertices.size(); ++i)
-      m_input_indices[fill[m_input_vertices[i]->vertex_index()]++] = i;
+    for(size_type i = 0; i < vertex_index_of_input.size(); ++i)
+      m_input_indices[fill[vertex_index_of_input[i]]++] = i;
   }
 
   // Every cell, its index set to its place in the list.
