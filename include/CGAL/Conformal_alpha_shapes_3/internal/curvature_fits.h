@@ -329,8 +329,8 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
       weights += w * shell.count;
     }
   }
-  m.pairs[0][0](0) += 1;
-  m2.pairs[0][0](0) += 1;
+  m.add(0, 0);  // the vertex's own row
+  m2.add(0, 0);
 
   // from coordinates divided by `length` to coordinates divided by `fade`:
   // a monomial of degree k scales by s^k, s = length / fade, the height by s

@@ -133,8 +133,7 @@ public:
     for(std::size_t level = 0; level < radii.size(); ++level)
       m_squared_radii[level] = radii[level] * radii[level];
     const Vec3& p = g.points[v];
-    m_pending[0].vertices.push_back(v);
-    m_pending[0].squared_distances.push_back(0);
+    m_pending[0].push(v, 0);
     for(std::size_t level = 0; level < radii.size(); ++level)
     {
       // the pending list of this level grows while it is walked
@@ -157,10 +156,7 @@ public:
           while(at < radii.size() && d2 > m_squared_radii[at])
             ++at;
           if(at < radii.size())  // else outside every ball
-          {
-            m_pending[at].vertices.push_back(w);
-            m_pending[at].squared_distances.push_back(d2);
-          }
+            m_pending[at].push(w, d2);
         }
       }
       m_end[level] = m_found.size();
@@ -205,10 +201,7 @@ private:
     m_end.assign(levels, 0);
     m_pending.resize((std::max)(levels, m_pending.size()));
     for(Pending& pending : m_pending)
-    {
-      pending.vertices.clear();
-      pending.squared_distances.clear();
-    }
+      pending.clear();
     m_stamp[v] = m_current;
   }
 
@@ -236,6 +229,17 @@ private:
   {
     std::vector<std::size_t> vertices;
     std::vector<double> squared_distances;
+
+    void push(std::size_t vertex, double squared_distance)
+    {
+      vertices.push_back(vertex);
+      squared_distances.push_back(squared_distance);
+    }
+    void clear()
+    {
+      vertices.clear();
+      squared_distances.clear();
+    }
   };
   std::vector<Pending> m_pending;  // by level
 };
