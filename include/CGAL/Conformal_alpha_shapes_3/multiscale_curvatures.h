@@ -435,16 +435,9 @@ private:
       return m_tree;
     }
     // the local spacing of the local-scale rule at a vertex of the shape
-    double spacing(std::size_t vertex_index)
+    double spacing(typename Shape::Vertex_handle v) const
     {
-      if(m_spacing.empty())
-      {
-        const Shape& shape = m_analysis.m_shape;
-        const std::vector<typename Shape::Cell_handle> cells(shape.all_cell_handles().begin(),
-                                                             shape.all_cell_handles().end());
-        m_spacing = internal::kth_shortest_edge_lengths<internal::Local_scale_policy::spacing_edge_rank>(shape, cells);
-      }
-      return m_spacing[vertex_index];
+      return internal::kth_shortest_edge_length<internal::Local_scale_policy::spacing_edge_rank>(m_analysis.m_shape, v);
     }
 
   private:
@@ -452,7 +445,6 @@ private:
     const Surface& m_surface;
     const Working_point_map& m_working;
     Tree m_tree;
-    std::vector<double> m_spacing;
   };
 
   // For every vertex of the shape (by vertex index), the surface vertex
@@ -516,7 +508,7 @@ private:
     const Point& p = v->point();
     const auto nearest = nearest_point.tree().closest_point_and_primitive(p);
     c.distance = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)));
-    if(c.distance > far_from_surface() * nearest_point.spacing(v->vertex_index()))
+    if(c.distance > far_from_surface() * nearest_point.spacing(v))
       return c;
     // barycentric weights of the nearest point, over the corners with values
     Surface_vertex corner[3];

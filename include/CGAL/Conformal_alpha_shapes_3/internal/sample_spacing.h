@@ -8,6 +8,8 @@
 
 #include <CGAL/tags.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -98,6 +100,30 @@ std::vector<double> kth_shortest_edge_lengths(const Dt& dt, const std::vector<ty
       spacing[v] = std::sqrt(CGAL::to_double(squared_distance(vertex[v]->point(), vertex[e.second]->point())));
   }
   return spacing;
+}
+
+// The same length at the single finite vertex `v`, from its adjacent
+// vertices: for the few vertices that need it after the construction, where
+// a pass over every cell would cost more than their neighborhoods. Lengths
+// are compared in float, as there, so that both give the same value.
+template <std::size_t K, class Dt>
+double kth_shortest_edge_length(const Dt& dt, typename Dt::Vertex_handle v)
+{
+  const auto squared_distance = dt.geom_traits().compute_squared_distance_3_object();
+  std::vector<std::pair<float, typename Dt::Vertex_handle> > edges;
+  dt.finite_adjacent_vertices(v, boost::make_function_output_iterator([&](typename Dt::Vertex_handle q) {
+    edges.emplace_back(float(CGAL::to_double(squared_distance(v->point(), q->point()))), q);
+  }));
+  if(edges.empty())
+    return 0;
+  const std::size_t k = std::min(K, edges.size()) - 1;
+  std::nth_element(edges.begin(), edges.begin() + k, edges.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  const float length = edges[k].first;
+  // beyond float's range, taken again in double (see above)
+  if(!(length > 0 && length < std::numeric_limits<float>::infinity()))
+    return std::sqrt(CGAL::to_double(squared_distance(v->point(), edges[k].second->point())));
+  return std::sqrt(double(length));
 }
 
 // The local-scale policy of `NOISE_ROBUST_POLE_DISTANCE` (the manual, section
