@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -62,15 +63,67 @@ struct Layer
 
 namespace output_detail {
 
-template <class T>
-void put_little_endian(std::string& out, T x)
+// What the two binary little-endian PLY files share: the header's start
+// with its comments and a comment line per layer, the float properties of
+// a layer's values, and the rows, written in blocks of about a megabyte.
+inline void put_header_start(std::ostream& header, std::initializer_list<const char*> comments,
+                             const Layer* first, const Layer* last)
 {
-  static_assert(std::is_arithmetic<T>::value, "a number");
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &x, sizeof(T));
-  // the platforms of these programs are little-endian; the header says so
-  out.append(bytes, sizeof(T));
+  header << "ply\nformat binary_little_endian 1.0\n";
+  for(const char* comment : comments)
+    header << "comment " << comment << "\n";
+  for(const Layer* layer = first; layer != last; ++layer)
+    header << "comment layer " << layer->label << ": " << layer->description << "\n";
 }
+
+inline void put_value_properties(std::ostream& header, const Layer& layer)
+{
+  for(int j = 0; j < Layer::number_of_values; ++j)
+    header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
+}
+
+class Row_writer
+{
+public:
+  explicit Row_writer(std::ostream& out) : m_out(out) {}
+  ~Row_writer() { write(); }
+
+  template <class T>
+  void put(T x)
+  {
+    static_assert(std::is_arithmetic<T>::value, "a number");
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &x, sizeof(T));
+    // the platforms of these programs are little-endian; the header says so
+    m_block.append(bytes, sizeof(T));
+  }
+  template <class Point>
+  void put_position(const Point& p)
+  {
+    put(double(p.x()));
+    put(double(p.y()));
+    put(double(p.z()));
+  }
+  void put_values(const Layer& layer, std::size_t i)
+  {
+    for(int j = 0; j < Layer::number_of_values; ++j)
+      put(layer.values[i * Layer::number_of_values + std::size_t(j)]);
+  }
+  void end_row()
+  {
+    if(m_block.size() > (1u << 20))
+      write();
+  }
+
+private:
+  void write()
+  {
+    m_out.write(m_block.data(), std::streamsize(m_block.size()));
+    m_block.clear();
+  }
+  std::ostream& m_out;
+  std::string m_block;
+};
 
 } // namespace output_detail
 
@@ -80,41 +133,31 @@ template <class Point>
 void write_point_cloud(std::ostream& out, const std::vector<Point>& points, const std::vector<bool>& outlier,
                        const std::vector<Layer>& layers)
 {
-  using output_detail::put_little_endian;
   std::ostringstream header;
-  header << "ply\nformat binary_little_endian 1.0\n"
-         << "comment conformal_curvature: values per input point, in input units\n"
-         << "comment source_L: 0 own surface vertex, 1 nearest surface point, 2 no value\n";
-  for(const Layer& layer : layers)
-    header << "comment layer " << layer.label << ": " << layer.description << "\n";
+  output_detail::put_header_start(header,
+                                  {"conformal_curvature: values per input point, in input units",
+                                   "source_L: 0 own surface vertex, 1 nearest surface point, 2 no value"},
+                                  layers.data(), layers.data() + layers.size());
   header << "element vertex " << points.size() << "\n"
          << "property double x\nproperty double y\nproperty double z\nproperty uchar outlier\n";
   for(const Layer& layer : layers)
   {
-    for(int j = 0; j < Layer::number_of_values; ++j)
-      header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
+    output_detail::put_value_properties(header, layer);
     header << "property uchar source_" << layer.label << "\n";
   }
   header << "end_header\n";
   out << header.str();
-  std::string block;
+  output_detail::Row_writer rows(out);
   for(std::size_t i = 0; i < points.size(); ++i)
   {
-    put_little_endian(block, double(points[i].x()));
-    put_little_endian(block, double(points[i].y()));
-    put_little_endian(block, double(points[i].z()));
-    put_little_endian(block, std::uint8_t(outlier[i] ? 1 : 0));
+    rows.put_position(points[i]);
+    rows.put(std::uint8_t(outlier[i] ? 1 : 0));
     for(const Layer& layer : layers)
     {
-      for(int j = 0; j < Layer::number_of_values; ++j)
-        put_little_endian(block, layer.values[i * Layer::number_of_values + std::size_t(j)]);
-      put_little_endian(block, layer.source[i]);
+      rows.put_values(layer, i);
+      rows.put(layer.source[i]);
     }
-    if(block.size() > (1u << 20) || i + 1 == points.size())
-    {
-      out.write(block.data(), std::streamsize(block.size()));
-      block.clear();
-    }
+    rows.end_row();
   }
 }
 
@@ -128,7 +171,6 @@ template <class Surface, class Point>
 void write_surface(std::ostream& out, const Surface& surface, const std::vector<Point>& points,
                    const Layer* first, const Layer* last)
 {
-  using output_detail::put_little_endian;
   typedef typename Surface::Vertex_index Vertex;
   const auto input_index = surface.template property_map<Vertex, std::size_t>("v:input_index").first;
   std::vector<std::uint32_t> number(surface.num_vertices());  // by vertex, in the order written
@@ -147,50 +189,37 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
     color_by_curvature(surface, First_layer_H{first, &input_index}, color);
 
   std::ostringstream header;
-  header << "ply\nformat binary_little_endian 1.0\n"
-         << "comment conformal_curvature: a surface, its vertices at their input points, values in input units\n";
-  for(const Layer* layer = first; layer != last; ++layer)
-    header << "comment layer " << layer->label << ": " << layer->description << "\n";
+  output_detail::put_header_start(
+    header, {"conformal_curvature: a surface, its vertices at their input points, values in input units"}, first,
+    last);
   header << "element vertex " << surface.number_of_vertices() << "\n"
          << "property double x\nproperty double y\nproperty double z\nproperty uint input_index\n";
   for(const Layer* layer = first; layer != last; ++layer)
-    for(int j = 0; j < Layer::number_of_values; ++j)
-      header << "property float " << Layer::value_names()[j] << "_" << layer->label << "\n";
+    output_detail::put_value_properties(header, *layer);
   header << "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
          << "element face " << surface.number_of_faces() << "\n"
          << "property list uchar int vertex_indices\nend_header\n";
   out << header.str();
-  std::string block;
-  auto flush = [&](bool last_one) {
-    if(block.size() > (1u << 20) || last_one)
-    {
-      out.write(block.data(), std::streamsize(block.size()));
-      block.clear();
-    }
-  };
+  output_detail::Row_writer rows(out);
   for(Vertex v : surface.vertices())
   {
     const std::size_t i = input_index[v];
-    put_little_endian(block, double(points[i].x()));
-    put_little_endian(block, double(points[i].y()));
-    put_little_endian(block, double(points[i].z()));
-    put_little_endian(block, std::uint32_t(i));
+    rows.put_position(points[i]);
+    rows.put(std::uint32_t(i));
     for(const Layer* layer = first; layer != last; ++layer)
-      for(int j = 0; j < Layer::number_of_values; ++j)
-        put_little_endian(block, layer->values[i * Layer::number_of_values + std::size_t(j)]);
+      rows.put_values(*layer, i);
     const CGAL::IO::Color& c = color[v];
     for(unsigned char channel : {c.red(), c.green(), c.blue(), c.alpha()})
-      put_little_endian(block, std::uint8_t(channel));
-    flush(false);
+      rows.put(std::uint8_t(channel));
+    rows.end_row();
   }
   for(auto f : surface.faces())
   {
-    put_little_endian(block, std::uint8_t(3));
+    rows.put(std::uint8_t(3));
     for(Vertex v : CGAL::vertices_around_face(surface.halfedge(f), surface))
-      put_little_endian(block, std::int32_t(number[v]));
-    flush(false);
+      rows.put(std::int32_t(number[v]));
+    rows.end_row();
   }
-  flush(true);
 }
 
 // The 5%, 50% and 95% quantiles of the finite values, for the summaries.
