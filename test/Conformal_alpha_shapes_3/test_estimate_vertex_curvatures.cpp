@@ -465,8 +465,10 @@ BOOST_AUTO_TEST_CASE(large_radii_from_centers_follow_the_own_fits)
   BOOST_TEST(quantile(to_own, 0.5) < 0.01);
   BOOST_TEST(quantile(to_own, 0.9) < 0.03);
   BOOST_TEST(quantile(to_truth, 0.5) < 1.2 * quantile(own_to_truth, 0.5) + 0.002);
+#ifdef CGAL_LINKED_WITH_TBB  // without TBB both runs are one serial path (and the sanitizer build's longest)
   BOOST_TEST(same_bits(all_outputs<CGAL::Sequential_tag>(mesh, np),
                        all_outputs<CGAL::Parallel_if_available_tag>(mesh, np)));
+#endif
 }
 
 // The quadric fit is corrected for the fourth order of a surface of its own
