@@ -300,7 +300,7 @@ public:
 
     // each neighborhood's estimates are freed once its layer is made, so
     // that the estimates and the layers are not all held at once
-    Nearest_surface_point nearest(*this, surface, working);
+    Nearest_surface_point nearest(surface, working);
     std::vector<std::vector<Point_curvature<Kernel> > > layers;
     for(std::vector<internal::Vertex_estimate>& by_surface_vertex : estimates)
     {
@@ -409,18 +409,17 @@ private:
     return c;
   }
 
-  // The nearest point of a surface to the shape's vertices, and their local
-  // spacings, for the vertices that have no value of their own (usually few
-  // or none: the search structures are built on first use).
+  // The nearest point of a surface to the shape's vertices, for the vertices
+  // that have no value of their own (usually few or none: the search
+  // structure is built on first use).
   class Nearest_surface_point
   {
   public:
     typedef CGAL::AABB_face_graph_triangle_primitive<Surface, Working_point_map> Primitive;
     typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
 
-    Nearest_surface_point(const Multiscale_curvatures& analysis, const Surface& surface,
-                          const Working_point_map& working)
-      : m_analysis(analysis), m_surface(surface), m_working(working)
+    Nearest_surface_point(const Surface& surface, const Working_point_map& working)
+      : m_surface(surface), m_working(working)
     {}
 
     bool empty() const { return CGAL::is_empty(m_surface); }
@@ -434,14 +433,8 @@ private:
       }
       return m_tree;
     }
-    // the local spacing of the local-scale rule at a vertex of the shape
-    double spacing(typename Shape::Vertex_handle v) const
-    {
-      return internal::kth_shortest_edge_length<internal::Local_scale_policy::spacing_edge_rank>(m_analysis.m_shape, v);
-    }
 
   private:
-    const Multiscale_curvatures& m_analysis;
     const Surface& m_surface;
     const Working_point_map& m_working;
     Tree m_tree;
@@ -508,7 +501,9 @@ private:
     const Point& p = v->point();
     const auto nearest = nearest_point.tree().closest_point_and_primitive(p);
     c.distance = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)));
-    if(c.distance > far_from_surface() * nearest_point.spacing(v))
+    // far against the local spacing of the local-scale rule
+    typedef internal::Local_scale_policy Policy;
+    if(c.distance > far_from_surface() * internal::kth_shortest_edge_length<Policy::spacing_edge_rank>(m_shape, v))
       return c;
     // barycentric weights of the nearest point, over the corners with values
     Surface_vertex corner[3];

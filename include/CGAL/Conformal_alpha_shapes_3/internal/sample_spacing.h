@@ -23,6 +23,18 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
+// The length of the edge (p, q) from its squared length kept in float. A
+// squared length beyond float's range (lengths above 1.8e19 or below 4e-23,
+// as far outliers give) is taken again in double: an infinite spacing would
+// make the local scale infinite and the values NaN.
+template <class Dt>
+double edge_length(const Dt& dt, float squared_length, typename Dt::Vertex_handle p, typename Dt::Vertex_handle q)
+{
+  if(squared_length > 0 && squared_length < std::numeric_limits<float>::infinity())
+    return std::sqrt(double(squared_length));
+  return std::sqrt(CGAL::to_double(dt.geom_traits().compute_squared_distance_3_object()(p->point(), q->point())));
+}
+
 // The local sample spacing at each finite vertex (by `v->vertex_index()`):
 // the length of its K-th shortest Delaunay edge (its longest one when it has
 // fewer). One pass over `cells` (every cell of `dt`; the infinite ones are
@@ -92,12 +104,8 @@ std::vector<double> kth_shortest_edge_lengths(const Dt& dt, const std::vector<ty
     while(k > 0 && shortest[v][k].second == none.second)
       --k;
     const Edge_to& e = shortest[v][k];
-    spacing[v] = std::sqrt(double(e.first));
-    // a squared length beyond float's range (lengths above 1.8e19 or below
-    // 4e-23, as far outliers give) is taken again in double: an infinite
-    // spacing would make the local scale infinite and the values NaN
-    if(e.second != none.second && !(e.first > 0 && e.first < std::numeric_limits<float>::infinity()))
-      spacing[v] = std::sqrt(CGAL::to_double(squared_distance(vertex[v]->point(), vertex[e.second]->point())));
+    spacing[v] = e.second == none.second ? std::sqrt(double(e.first))
+                                         : edge_length(dt, e.first, vertex[v], vertex[e.second]);
   }
   return spacing;
 }
@@ -119,11 +127,7 @@ double kth_shortest_edge_length(const Dt& dt, typename Dt::Vertex_handle v)
   const std::size_t k = std::min(K, edges.size()) - 1;
   std::nth_element(edges.begin(), edges.begin() + k, edges.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  const float length = edges[k].first;
-  // beyond float's range, taken again in double (see above)
-  if(!(length > 0 && length < std::numeric_limits<float>::infinity()))
-    return std::sqrt(CGAL::to_double(squared_distance(v->point(), edges[k].second->point())));
-  return std::sqrt(double(length));
+  return edge_length(dt, edges[k].first, v, edges[k].second);
 }
 
 // The local-scale policy of `NOISE_ROBUST_POLE_DISTANCE` (the manual, section
