@@ -28,9 +28,13 @@
 #include "cas3_test_shapes.h"
 
 #include <boost/mpl/list.hpp>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -625,6 +629,31 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
   surface.collect_garbage();
 
   const std::vector<CAS3::Point_curvature<K> > c = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
+#ifdef CGAL_LINKED_WITH_TBB
+  {
+    // on one thread, the same bits: the points on their own vertex are
+    // filled in parallel, the others serially
+    tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    const std::vector<CAS3::Point_curvature<K> > serial =
+      analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
+    auto values = [](const CAS3::Point_curvature<K>& p) {
+      return std::vector<double>{double(p.source), p.distance, p.radius, p.normal.x(), p.normal.y(), p.normal.z(),
+                                 p.mean_curvature, p.gaussian_curvature, p.principal.max_curvature,
+                                 p.principal.min_curvature, p.principal.max_direction.x(),
+                                 p.principal.max_direction.y(), p.principal.max_direction.z(),
+                                 p.principal.min_direction.x(), p.principal.min_direction.y(),
+                                 p.principal.min_direction.z()};
+    };
+    std::size_t differing = 0;
+    for(std::size_t i = 0; i < c.size(); ++i)
+    {
+      const std::vector<double> a = values(c[i]), b = values(serial[i]);
+      if(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) != 0)
+        ++differing;
+    }
+    BOOST_TEST(differing == 0u);
+  }
+#endif
   std::size_t own = 0, nearest = 0, none = 0;
   const double spacing = std::sqrt(4 * M_PI / 4000);
   for(std::size_t i = 0; i < pts.size(); ++i)

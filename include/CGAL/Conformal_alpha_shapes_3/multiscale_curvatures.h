@@ -19,6 +19,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/scales_and_neighborhoods.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -306,13 +307,26 @@ public:
     {
       const std::vector<std::size_t> own = surface_vertex_of_shape_vertex(surface, by_surface_vertex);
       std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
-      for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
-      {
+      auto fill = [&](std::size_t i) {
         Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
         c = in_input_units(value_at_vertex(m_shape.input_vertex(i), own, surface, by_surface_vertex, nearest));
         if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
           take_other_side(c);
-      }
+      };
+      // points on their own surface vertex in parallel; the others after,
+      // serially: their spacing walks the shape's adjacency, and CGAL's
+      // walks mark the vertices they visit
+      const auto on_surface = [&](std::size_t i) {
+        return own[m_shape.input_vertex(i)->vertex_index()] != no_surface_vertex;
+      };
+      internal::for_each_index<CGAL::Parallel_if_available_tag>(
+        m_input.input_index.size(), []() { return 0; }, [&](std::size_t i, int&) {
+          if(on_surface(i))
+            fill(i);
+        });
+      for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
+        if(!on_surface(i))
+          fill(i);
       std::vector<internal::Vertex_estimate>().swap(by_surface_vertex);
       layers.push_back(std::move(per_point));
     }
