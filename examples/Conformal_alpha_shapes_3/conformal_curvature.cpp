@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "cas3_curvature_output.h"
+#include "cas3_malloc_arena.h"
 #include "cas3_read_point_cloud.h"
 
 #include <algorithm>
@@ -559,6 +560,7 @@ int run(const Options& o)
 
 int main(int argc, char* argv[])
 {
+  cas3::use_one_malloc_arena();
   try
   {
     const Options options = parse(argc, argv);
