@@ -426,6 +426,22 @@ BOOST_AUTO_TEST_CASE(advancing_front_surface_on_clean_closed_samples)
   }
 }
 
+// The soup's neighbors are paired as CGAL's advancing-front surface pairs
+// its faces: on an edge, the first triangle with the second, the third with
+// the fourth, and a fifth is left with a border there.
+BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
+{
+  CAS3::internal::Advancing_front_soup soup;
+  soup.shape_vertex = {0, 1, 2, 3, 4, 5, 6, 7};
+  soup.triangles = {{{0, 1, 2}}, {{1, 0, 3}}, {{0, 1, 4}}, {{1, 0, 5}}, {{0, 1, 6}}, {{2, 1, 7}}};
+  soup.values.assign(soup.triangles.size(), 1.);
+  CAS3::internal::pair_neighbors(soup);
+  const std::size_t o = CAS3::internal::Advancing_front_soup::no_neighbor;
+  const std::vector<std::array<std::size_t, 3> > expected = {
+    {{5, o, 1}}, {{o, o, 0}}, {{o, o, 3}}, {{o, o, 2}}, {{o, o, o}}, {{o, o, 0}}};
+  BOOST_TEST((soup.neighbors == expected));
+}
+
 // Noise of 0.1 and 0.3 spacings along the normal: the points are smoothed,
 // and the surface is one outward sheet (today's solid boundary had an inner
 // wall there, facing half of the points inwards).

@@ -13,7 +13,6 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_data_structure_3.h>
-#include <CGAL/Unique_hash_map.h>
 
 #include <algorithm>
 #include <array>
@@ -169,14 +168,16 @@ void copy_with_facet_values(const Cas& cas, FrontTriangulation& triangulation, s
   triangulation.set_infinite_vertex(infinite_copy);
 }
 
-// The soup of `advancing_front_soup()` in the order the front grew it.
+// The triangles of `advancing_front_soup()`, with their values, in the
+// order the front's surface holds them; their neighbors are left to
+// `pair_neighbors()`, once the front is freed.
 //
 // The advancing front removes the vertices it cannot attach from the
 // triangulation it works on, so it runs on a copy of the shape's
 // triangulation (a combinatorial copy: no predicate is evaluated again) whose
 // cells carry the conformal values of their facets.
 template <class Cas>
-Advancing_front_soup soup_in_growth_order(const Cas& cas)
+Advancing_front_soup front_triangles(const Cas& cas)
 {
   typedef typename Cas::Geom_traits Gt;
   typedef Advancing_front_surface_reconstruction_vertex_base_3<Gt> Vb;
@@ -196,15 +197,18 @@ Advancing_front_soup soup_in_growth_order(const Cas& cas)
   Front front(triangulation, Conformal_priority{&seeding});
   front.run();
 
-  typedef typename Front::Triangulation_data_structure_2 Tds_2;
-  const Tds_2& tds = front.triangulation_data_structure_2();
+  // CGAL's surface holds its faces in the order it created them (a fresh
+  // container, nothing erased), which is the order its adjacency was
+  // paired in; `pair_neighbors()` relies on it
+  const typename Front::Triangulation_data_structure_2& tds = front.triangulation_data_structure_2();
+  soup.triangles.reserve(tds.number_of_faces());
+  soup.values.reserve(tds.number_of_faces());
+  soup.shape_vertex.reserve(tds.number_of_vertices());
   std::vector<std::size_t> soup_vertex(cas.number_of_vertices(), no_vertex);  // by shape vertex
-  CGAL::Unique_hash_map<typename Tds_2::Face_handle, std::size_t> soup_triangle(no_vertex, tds.number_of_faces());
   for(auto f = tds.faces_begin(); f != tds.faces_end(); ++f)
   {
     if(!f->is_on_surface())
       continue;
-    soup_triangle[f] = soup.triangles.size();
     std::array<std::size_t, 3> triangle;
     for(int k = 0; k < 3; ++k)
     {
@@ -220,16 +224,6 @@ Advancing_front_soup soup_in_growth_order(const Cas& cas)
     soup.triangles.push_back(triangle);
     soup.values.push_back(f->facet().first->info().facet[f->facet().second]);
   }
-  soup.neighbors.reserve(soup.triangles.size());
-  for(auto f = tds.faces_begin(); f != tds.faces_end(); ++f)
-  {
-    if(!f->is_on_surface())
-      continue;
-    std::array<std::size_t, 3> n;
-    for(int k = 0; k < 3; ++k)
-      n[k] = f->neighbor(k)->is_on_surface() ? soup_triangle[f->neighbor(k)] : Advancing_front_soup::no_neighbor;
-    soup.neighbors.push_back(n);
-  }
   return soup;
 }
 
@@ -244,10 +238,12 @@ Advancing_front_soup soup_in_growth_order(const Cas& cas)
 template <class Cas>
 Advancing_front_soup advancing_front_soup(const Cas& cas)
 {
-  // ordered once the front and its copy of the triangulation are freed:
-  // the ordering's arrays were the top of the front's memory peak (at 1M
-  // points, 240 of 2,550 MB)
-  Advancing_front_soup soup = soup_in_growth_order(cas);
+  // paired and ordered once the front and its copy of the triangulation
+  // are freed: the ordering's arrays were the top of the front's memory
+  // peak (at 1M points, 240 of 2,550 MB), and so were the neighbors read
+  // from CGAL's surface through a hash table of its faces
+  Advancing_front_soup soup = front_triangles(cas);
+  pair_neighbors(soup);
   put_in_canonical_order(soup);
   return soup;
 }

@@ -37,6 +37,56 @@ struct Advancing_front_soup
   static constexpr std::size_t no_neighbor = std::size_t(-1);
 };
 
+// Sets the soup's neighbors from its triangles as CGAL's advancing-front
+// surface pairs its faces: the faces on an edge are paired in their order,
+// the first with the second, the third with the fourth, and a face left
+// alone has a border there. The front leaves at most two faces on an edge,
+// so in practice this is: the two triangles on an edge are neighbors. The
+// triangles must be in the front's order (`front_triangles()`). Edges are
+// grouped by their smaller vertex (a counting sort, which keeps the
+// triangles' order), and a vertex has few edges, so each group is paired
+// by a scan.
+inline void pair_neighbors(Advancing_front_soup& soup)
+{
+  const std::size_t none = Advancing_front_soup::no_neighbor;
+  const std::size_t nt = soup.triangles.size();
+  // the edge of corner c = 3 t + k is the one opposite to vertex k of t
+  auto ends = [&](std::size_t c) {
+    const std::array<std::size_t, 3>& t = soup.triangles[c / 3];
+    const std::size_t a = t[(c % 3 + 1) % 3], b = t[(c % 3 + 2) % 3];
+    return std::make_pair((std::min)(a, b), (std::max)(a, b));
+  };
+  std::vector<std::size_t> first(soup.shape_vertex.size() + 1, 0);
+  for(std::size_t c = 0; c < 3 * nt; ++c)
+    ++first[ends(c).first + 1];
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<std::size_t> by_vertex(3 * nt);
+  {
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for(std::size_t c = 0; c < 3 * nt; ++c)
+      by_vertex[next[ends(c).first]++] = c;
+  }
+  soup.neighbors.assign(nt, {{none, none, none}});
+  std::vector<char> waiting(3 * nt, 0);  // seen, not yet paired
+  for(std::size_t v = 0; v + 1 < first.size(); ++v)
+    for(std::size_t i = first[v]; i < first[v + 1]; ++i)
+    {
+      const std::size_t c = by_vertex[i], other = ends(c).second;
+      std::size_t j = first[v];
+      while(j < i && !(waiting[by_vertex[j]] && ends(by_vertex[j]).second == other))
+        ++j;
+      if(j == i)
+        waiting[c] = 1;
+      else
+      {
+        const std::size_t d = by_vertex[j];
+        waiting[d] = 0;
+        soup.neighbors[c / 3][c % 3] = d / 3;
+        soup.neighbors[d / 3][d % 3] = c / 3;
+      }
+    }
+}
+
 // Puts the soup in an order that depends only on its triangles, not on the
 // order in which the front grew them (which follows memory addresses where
 // the front's own criteria tie): vertices by shape vertex, triangles
