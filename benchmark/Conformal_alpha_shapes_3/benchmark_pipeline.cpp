@@ -440,6 +440,10 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
     return std::to_string(report.number_of_faces) + " faces, " + std::to_string(report.number_of_parts)
            + " parts, " + std::to_string(report.number_of_points_off_surface) + " points off";
   });
+  m.stage("program: return freed memory (malloc_trim)", "stage", [&] {
+    cas3::return_freed_memory();
+    return std::string();
+  });
   std::vector<cas3::Layer> layers;
   const std::vector<CAS3::Neighborhood> neighborhoods = CAS3::default_neighborhoods();
   std::vector<std::vector<CAS3::Point_curvature<K> > > curvatures;

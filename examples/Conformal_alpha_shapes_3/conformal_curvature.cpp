@@ -478,6 +478,7 @@ int run(const Options& o)
     summary << "scale " << scale.label() << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
             << " closed, " << report.number_of_open_parts() << " open), "
             << report.number_of_points_off_surface << " points off the surface\n";
+    cas3::return_freed_memory();
     std::vector<std::vector<CAS3::Point_curvature<K> > > by_neighborhood =
       analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);
     for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)

@@ -290,12 +290,16 @@ public:
       internal::check_neighborhood_rule(rules[r], estimator);
     }
     const Working_point_map working = working_points(surface);
-    const auto vertex_index = get(CGAL::vertex_index, surface);
-    const internal::Vertex_graph graph = internal::vertex_graph(surface, working, vertex_index);
-    std::vector<std::vector<internal::Vertex_estimate> > estimates =
-      internal::estimate_at_every_vertex<CGAL::Parallel_if_available_tag>(
+    std::vector<std::vector<internal::Vertex_estimate> > estimates;
+    {
+      // the graph is freed before the layers are made (80 MB at 1,000,000
+      // points, at the top of the stage's memory)
+      const auto vertex_index = get(CGAL::vertex_index, surface);
+      const internal::Vertex_graph graph = internal::vertex_graph(surface, working, vertex_index);
+      estimates = internal::estimate_at_every_vertex<CGAL::Parallel_if_available_tag>(
         graph, internal::chen_wu_normals<CGAL::Parallel_if_available_tag>(surface, working, vertex_index), rules,
         estimator, m_noise.noise * m_noise.spacing);
+    }
     if(!estimates.empty())
       set_surface_properties(surface, estimates.back());
 
