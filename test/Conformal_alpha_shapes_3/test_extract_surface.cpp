@@ -428,7 +428,8 @@ BOOST_AUTO_TEST_CASE(advancing_front_surface_on_clean_closed_samples)
 
 // The soup's neighbors are paired as CGAL's advancing-front surface pairs
 // its faces: on an edge, the first triangle with the second, the third with
-// the fourth, and a fifth is left with a border there.
+// the fourth, and a fifth is left with a border there; around a vertex of
+// high degree too.
 BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
 {
   CAS3::internal::Advancing_front_soup soup;
@@ -440,6 +441,23 @@ BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
   const std::vector<std::array<std::size_t, 3> > expected = {
     {{5, o, 1}}, {{o, o, 0}}, {{o, o, 3}}, {{o, o, 2}}, {{o, o, o}}, {{o, o, 0}}};
   BOOST_TEST((soup.neighbors == expected));
+
+  // a closed fan of 1,000 triangles around vertex 0: each spoke joins two
+  // triangles, the rim is a border
+  const std::size_t n = 1000;
+  CAS3::internal::Advancing_front_soup fan;
+  fan.shape_vertex.resize(n + 1);
+  for(std::size_t i = 0; i < n; ++i)
+    fan.triangles.push_back({{0, i + 1, (i + 1) % n + 1}});
+  fan.values.assign(n, 1.);
+  CAS3::internal::pair_neighbors(fan);
+  std::size_t wrong = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<std::size_t, 3> around = {{o, (i + 1) % n, (i + n - 1) % n}};
+    wrong += fan.neighbors[i] == around ? 0 : 1;
+  }
+  BOOST_TEST(wrong == 0u);
 }
 
 // Noise of 0.1 and 0.3 spacings along the normal: the points are smoothed,
