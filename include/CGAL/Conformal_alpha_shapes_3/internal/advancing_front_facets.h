@@ -28,13 +28,24 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
-// The conformal values of an advancing-front cell's facets; cells the front
-// creates while removing a vertex have none (infinite: never a candidate).
-struct Conformal_cell_values
+// The shape's cell that an advancing-front cell copies, whose facets' values
+// the front reads on demand (a handle instead of four values: 32 bytes less
+// per cell at the front's memory peak); the cells the front creates while
+// removing a vertex copy none and are never a candidate.
+template <class Shape_cell_handle>
+struct Copied_cell
 {
-  std::array<double, 4> facet{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                               std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
+  Shape_cell_handle shape_cell{};
 };
+
+// The conformal value of facet `i` of a front cell copying `shape_cell`
+// (the copy keeps the shape's vertex order in each cell).
+template <class Cas>
+double copied_facet_value(const Cas& cas, typename Cas::Cell_handle shape_cell, int i)
+{
+  return shape_cell == typename Cas::Cell_handle() ? std::numeric_limits<double>::infinity()
+                                                   : double(cas.conformal_alpha(shape_cell, i));
+}
 
 // Each new part of the front starts from the smallest facet whose vertices
 // are all off the surface, found by a scan over every facet. Where the front
@@ -90,14 +101,16 @@ inline double facet_tie_breaker(std::size_t u, std::size_t v, std::size_t w)
 // The front's priority: the conformal value of a facet (infinite facets and
 // the cells the front creates have an infinite value: never taken); no seed
 // is taken once seeding has stopped.
+template <class Cas>
 struct Conformal_priority
 {
+  const Cas* shape;
   Front_seeding* seeding;
 
   template <class AdvancingFront, class Cell_handle>
   double operator()(const AdvancingFront& front, Cell_handle& c, const int& i) const
   {
-    const double value = c->info().facet[i];
+    const double value = copied_facet_value(*shape, c->info().shape_cell, i);
     const bool seed = c->vertex((i + 1) & 3)->is_exterior() && c->vertex((i + 2) & 3)->is_exterior()
                       && c->vertex((i + 3) & 3)->is_exterior();
     if(seed && !seeding->may_seed(front))
@@ -109,14 +122,14 @@ struct Conformal_priority
 
 // Fills `triangulation` (empty) with a combinatorial copy of the shape's
 // triangulation, cells and vertices in the shape's order (the front visits
-// them in that order), whose cells carry the conformal values of their
-// facets and whose vertices carry the shape's vertex indices (`no_vertex`
-// for the infinite one). CGAL's `copy_tds()` maps handles through hash
+// them in that order), whose cells carry the shape's cell they copy and
+// whose vertices carry the shape's vertex indices (`no_vertex` for the
+// infinite one). CGAL's `copy_tds()` maps handles through hash
 // tables (330 MB at 1M points, and 4.6 s for the copy against 2.9 s this
 // way); the shape's dense indices make that a look-up, and cells are linked
-// and valued in parallel.
+// in parallel.
 template <class Cas, class FrontTriangulation>
-void copy_with_facet_values(const Cas& cas, FrontTriangulation& triangulation, std::size_t no_vertex)
+void copy_triangulation(const Cas& cas, FrontTriangulation& triangulation, std::size_t no_vertex)
 {
   typedef typename FrontTriangulation::Triangulation_data_structure Front_tds;
   typedef typename Front_tds::Vertex_handle Front_vertex_handle;
@@ -161,9 +174,8 @@ void copy_with_facet_values(const Cas& cas, FrontTriangulation& triangulation, s
     {
       d->set_vertex(i, copy_of(c->vertex(i)));
       d->set_neighbor(i, cell_copy[c->neighbor(i)->cell_index()]);
-      d->info().facet[i] =
-        cas.is_infinite(c, i) ? std::numeric_limits<double>::infinity() : double(cas.conformal_alpha(c, i));
     }
+    d->info().shape_cell = c;
   });
   triangulation.set_infinite_vertex(infinite_copy);
 }
@@ -175,16 +187,16 @@ void copy_with_facet_values(const Cas& cas, FrontTriangulation& triangulation, s
 // The advancing front removes the vertices it cannot attach from the
 // triangulation it works on, so it runs on a copy of the shape's
 // triangulation (a combinatorial copy: no predicate is evaluated again) whose
-// cells carry the conformal values of their facets.
+// cells point to the shape's cells they copy.
 template <class Cas>
 Advancing_front_soup front_triangles(const Cas& cas)
 {
   typedef typename Cas::Geom_traits Gt;
   typedef Advancing_front_surface_reconstruction_vertex_base_3<Gt> Vb;
   typedef Advancing_front_surface_reconstruction_cell_base_3<
-    Gt, Triangulation_cell_base_with_info_3<Conformal_cell_values, Gt, Delaunay_triangulation_cell_base_3<Gt> > > Cb;
+    Gt, Triangulation_cell_base_with_info_3<Copied_cell<typename Cas::Cell_handle>, Gt, Delaunay_triangulation_cell_base_3<Gt> > > Cb;
   typedef Delaunay_triangulation_3<Gt, Triangulation_data_structure_3<Vb, Cb> > Front_triangulation;
-  typedef Advancing_front_surface_reconstruction<Front_triangulation, Conformal_priority> Front;
+  typedef Advancing_front_surface_reconstruction<Front_triangulation, Conformal_priority<Cas> > Front;
 
   Advancing_front_soup soup;
   if(cas.dimension() < 3)
@@ -192,9 +204,9 @@ Advancing_front_soup front_triangles(const Cas& cas)
 
   const std::size_t no_vertex = std::size_t(-1);
   Front_triangulation triangulation(cas.geom_traits());
-  copy_with_facet_values(cas, triangulation, no_vertex);
+  copy_triangulation(cas, triangulation, no_vertex);
   Front_seeding seeding(cas.number_of_vertices());
-  Front front(triangulation, Conformal_priority{&seeding});
+  Front front(triangulation, Conformal_priority<Cas>{&cas, &seeding});
   front.run();
 
   // CGAL's surface holds its faces in the order it created them (a fresh
@@ -222,7 +234,7 @@ Advancing_front_soup front_triangles(const Cas& cas)
       triangle[k] = s;
     }
     soup.triangles.push_back(triangle);
-    soup.values.push_back(f->facet().first->info().facet[f->facet().second]);
+    soup.values.push_back(copied_facet_value(cas, f->facet().first->info().shape_cell, f->facet().second));
   }
   return soup;
 }
