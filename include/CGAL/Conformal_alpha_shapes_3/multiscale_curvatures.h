@@ -303,34 +303,21 @@ public:
     if(!estimates.empty())
       set_surface_properties(surface, estimates.back());
 
+    const std::vector<Surface_foot> feet = surface_feet(surface, working, estimates);
     // each neighborhood's estimates are freed once its layer is made, so
     // that the estimates and the layers are not all held at once
-    Nearest_surface_point nearest(surface, working);
     std::vector<std::vector<Point_curvature<Kernel> > > layers;
     for(std::vector<internal::Vertex_estimate>& by_surface_vertex : estimates)
     {
       const std::vector<std::size_t> own = surface_vertex_of_shape_vertex(surface, by_surface_vertex);
       std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
-      auto fill = [&](std::size_t i) {
-        Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
-        c = in_input_units(value_at_vertex(m_shape.input_vertex(i), own, surface, by_surface_vertex, nearest));
-        if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
-          take_other_side(c);
-      };
-      // points on their own surface vertex in parallel; the others after,
-      // serially: their spacing walks the shape's adjacency, and CGAL's
-      // walks mark the vertices they visit
-      const auto on_surface = [&](std::size_t i) {
-        return own[m_shape.input_vertex(i)->vertex_index()] != no_surface_vertex;
-      };
       internal::for_each_index<CGAL::Parallel_if_available_tag>(
         m_input.input_index.size(), []() { return 0; }, [&](std::size_t i, int&) {
-          if(on_surface(i))
-            fill(i);
+          Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
+          c = in_input_units(value_at_vertex(m_shape.input_vertex(i), own, surface, working, by_surface_vertex, feet));
+          if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
+            take_other_side(c);
         });
-      for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
-        if(!on_surface(i))
-          fill(i);
       std::vector<internal::Vertex_estimate>().swap(by_surface_vertex);
       layers.push_back(std::move(per_point));
     }
@@ -427,36 +414,78 @@ private:
     return c;
   }
 
-  // The nearest point of a surface to the shape's vertices, for the vertices
-  // that have no value of their own (usually few or none: the search
-  // structure is built on first use).
-  class Nearest_surface_point
+  // Where a vertex of the shape without a value of its own meets the
+  // surface: the nearest point of the surface, on `face`; `face` is null
+  // when the vertex is farther than `far_from_surface()` local spacings.
+  typedef typename Surface::Face_index Surface_face;
+  struct Surface_foot
   {
-  public:
-    typedef CGAL::AABB_face_graph_triangle_primitive<Surface, Working_point_map> Primitive;
-    typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
-
-    Nearest_surface_point(const Surface& surface, const Working_point_map& working)
-      : m_surface(surface), m_working(working)
-    {}
-
-    bool empty() const { return CGAL::is_empty(m_surface); }
-    const Working_point_map& working() const { return m_working; }
-    const Tree& tree()
-    {
-      if(m_tree.empty())
-      {
-        m_tree.insert(faces(m_surface).first, faces(m_surface).second, m_surface, m_working);
-        m_tree.accelerate_distance_queries();
-      }
-      return m_tree;
-    }
-
-  private:
-    const Surface& m_surface;
-    const Working_point_map& m_working;
-    Tree m_tree;
+    std::size_t shape_vertex;  // vertex index
+    Point point;
+    Surface_face face;
+    double distance;
   };
+
+  // The feet of the shape's vertices that take their values from the
+  // nearest point of the surface in some neighborhood (off the surface, or
+  // on vertices whose fits all failed), by vertex index: found once for
+  // all neighborhoods, so that the search tree over the surface's faces
+  // (about 200 MB at 1,000,000 points, for usually few vertices) is freed
+  // before the layers are made.
+  std::vector<Surface_foot> surface_feet(const Surface& surface, const Working_point_map& working,
+                                         const std::vector<std::vector<internal::Vertex_estimate> >& estimates) const
+  {
+    std::vector<Surface_foot> feet;
+    if(CGAL::is_empty(surface))
+      return feet;
+    std::vector<bool> needs_foot(m_shape.number_of_vertices(), false);
+    for(const std::vector<internal::Vertex_estimate>& by_surface_vertex : estimates)
+    {
+      const std::vector<std::size_t> own = surface_vertex_of_shape_vertex(surface, by_surface_vertex);
+      for(std::size_t v = 0; v < own.size(); ++v)
+        if(own[v] == no_surface_vertex)
+          needs_foot[v] = true;
+    }
+    std::vector<typename Shape::Vertex_handle> vertices;
+    for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
+    {
+      const typename Shape::Vertex_handle v = m_shape.input_vertex(i);
+      if(needs_foot[v->vertex_index()])
+      {
+        needs_foot[v->vertex_index()] = false;
+        vertices.push_back(v);
+      }
+    }
+    if(vertices.empty())
+      return feet;
+
+    typedef CGAL::AABB_face_graph_triangle_primitive<Surface, Working_point_map> Primitive;
+    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > tree;
+    tree.insert(faces(surface).first, faces(surface).second, surface, working);
+    // the search tree of the faces in their order, then the hierarchy,
+    // which sorts them: where several faces are nearest, the one found
+    // depends on that order
+    tree.accelerate_distance_queries();
+    tree.build();
+    feet.resize(vertices.size());
+    internal::for_each_index<CGAL::Parallel_if_available_tag>(
+      vertices.size(), []() { return 0; }, [&](std::size_t k, int&) {
+        const Point& p = vertices[k]->point();
+        const auto nearest = tree.closest_point_and_primitive(p);
+        feet[k] = Surface_foot{vertices[k]->vertex_index(), nearest.first, nearest.second,
+                               std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)))};
+      });
+    // far against the local spacing of the local-scale rule; serially:
+    // CGAL's walks over the shape mark the vertices they visit
+    typedef internal::Local_scale_policy Policy;
+    for(std::size_t k = 0; k < feet.size(); ++k)
+      if(feet[k].distance
+         > far_from_surface() * internal::kth_shortest_edge_length<Policy::spacing_edge_rank>(m_shape, vertices[k]))
+        feet[k].face = Surface_face();
+    std::sort(feet.begin(), feet.end(),
+              [](const Surface_foot& x, const Surface_foot& y) { return x.shape_vertex < y.shape_vertex; });
+    return feet;
+  }
 
   // For every vertex of the shape (by vertex index), the surface vertex
   // whose estimate it takes: its own first; at a pinch (a vertex standing
@@ -481,13 +510,13 @@ private:
   // index) at vertex `v` of the shape, in the working frame (see
   // `estimate_curvatures()`): its own surface vertex's (`own`, from
   // `surface_vertex_of_shape_vertex()`), or else interpolated at the
-  // nearest point of the surface. Made per point rather than kept per
+  // nearest point of the surface (`feet`, from `surface_feet()`). Made per point rather than kept per
   // vertex: a layer of values for every vertex was the top of the
   // curvature stage's memory.
   Point_curvature<Kernel> value_at_vertex(typename Shape::Vertex_handle v, const std::vector<std::size_t>& own,
-                                          const Surface& surface,
+                                          const Surface& surface, const Working_point_map& working,
                                           const std::vector<internal::Vertex_estimate>& estimates,
-                                          Nearest_surface_point& nearest_point) const
+                                          const std::vector<Surface_foot>& feet) const
   {
     auto estimate = [&](Surface_vertex u) -> const internal::Vertex_estimate& { return estimates[u.idx()]; };
     auto record = [&](Point_source source, double distance, double r, const Vector& n, double max_k, double min_k,
@@ -513,26 +542,23 @@ private:
     }
 
     // from the nearest point of the surface
-    if(nearest_point.empty())
+    const auto foot = std::lower_bound(feet.begin(), feet.end(), v->vertex_index(),
+                                       [](const Surface_foot& f, std::size_t x) { return f.shape_vertex < x; });
+    if(foot == feet.end() || foot->shape_vertex != v->vertex_index())  // the surface is empty
       return c;
-    const Working_point_map& working = nearest_point.working();
-    const Point& p = v->point();
-    const auto nearest = nearest_point.tree().closest_point_and_primitive(p);
-    c.distance = std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)));
-    // far against the local spacing of the local-scale rule
-    typedef internal::Local_scale_policy Policy;
-    if(c.distance > far_from_surface() * internal::kth_shortest_edge_length<Policy::spacing_edge_rank>(m_shape, v))
+    c.distance = foot->distance;
+    if(foot->face == Surface_face())
       return c;
     // barycentric weights of the nearest point, over the corners with values
     Surface_vertex corner[3];
     int i = 0;
-    for(Surface_vertex u : vertices_around_face(surface.halfedge(nearest.second), surface))
+    for(Surface_vertex u : vertices_around_face(surface.halfedge(foot->face), surface))
       corner[i++] = u;
     double weight[3], total = 0;
     for(int j = 0; j < 3; ++j)
     {
       weight[j] = estimate(corner[j]).defined()
-        ? std::sqrt(CGAL::to_double(CGAL::squared_area(nearest.first, get(working, corner[(j + 1) % 3]),
+        ? std::sqrt(CGAL::to_double(CGAL::squared_area(foot->point, get(working, corner[(j + 1) % 3]),
                                                        get(working, corner[(j + 2) % 3]))))
         : 0.;
       total += weight[j];
