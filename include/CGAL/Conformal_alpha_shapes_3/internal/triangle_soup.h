@@ -91,7 +91,12 @@ inline void pair_neighbors(Advancing_front_soup& soup)
 // Puts the soup in an order that depends only on its triangles, not on the
 // order in which the front grew them (which follows memory addresses where
 // the front's own criteria tie): vertices by shape vertex, triangles
-// lexicographically, each starting at its smallest vertex.
+// lexicographically, each starting at its smallest vertex. Each part keeps
+// the orientation the front gave it, which follows those addresses too (at
+// 3,000,000 points a part came out either way from one run to the next,
+// with the same triangles); the extraction orients the parts afterwards
+// (orient_surface_parts.h), but the order of the triangles still depends
+// on it.
 inline void put_in_canonical_order(Advancing_front_soup& soup)
 {
   const std::size_t nv = soup.shape_vertex.size(), nt = soup.triangles.size();
