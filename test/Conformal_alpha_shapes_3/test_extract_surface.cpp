@@ -460,6 +460,52 @@ BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
   BOOST_TEST(wrong == 0u);
 }
 
+// The soup's canonical order depends on its triangles only, not on the
+// order, the vertex numbers or the orientation of each part that the front
+// gave (which follow memory addresses): a strip of two triangles and a
+// lone triangle, given both ways, come out the same.
+BOOST_AUTO_TEST_CASE(canonical_soup_order_ignores_how_the_front_gave_it)
+{
+  typedef std::array<std::size_t, 3> Triangle;
+  // triangles over shape vertices, with their values
+  const std::vector<Triangle> strip_and_lone = {{{0, 1, 2}}, {{2, 1, 3}}, {{4, 5, 6}}};
+  const std::vector<double> values = {1., 2., 3.};
+  auto canonical = [&](bool renumbered, bool reversed, bool strip_turned, bool lone_turned) {
+    CAS3::internal::Advancing_front_soup soup;
+    for(std::size_t v = 0; v < 7; ++v)
+      soup.shape_vertex.push_back(renumbered ? 6 - v : v);
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t t = reversed ? 2 - i : i;
+      Triangle triangle = strip_and_lone[t];
+      for(std::size_t& v : triangle)
+        v = renumbered ? 6 - v : v;
+      if((strip_turned && t < 2) || (lone_turned && t == 2))
+        std::swap(triangle[1], triangle[2]);
+      soup.triangles.push_back(triangle);
+      soup.values.push_back(values[t]);
+    }
+    CAS3::internal::pair_neighbors(soup);
+    CAS3::internal::put_in_canonical_order(soup);
+    return soup;
+  };
+  const CAS3::internal::Advancing_front_soup reference = canonical(false, false, false, false);
+  for(int variant = 1; variant < 16; ++variant)
+  {
+    const CAS3::internal::Advancing_front_soup other =
+      canonical(variant & 1, variant & 2, variant & 4, variant & 8);
+    BOOST_TEST_CONTEXT("variant " << variant)
+    {
+      BOOST_TEST((other.shape_vertex == reference.shape_vertex));
+      BOOST_TEST((other.triangles == reference.triangles));
+      BOOST_TEST((other.neighbors == reference.neighbors));
+      BOOST_TEST((other.values == reference.values));
+    }
+  }
+  // the strip is one part: its triangles are neighbors
+  BOOST_TEST(reference.neighbors[0][0] == 1u);
+}
+
 // Noise of 0.1 and 0.3 spacings along the normal: the points are smoothed,
 // and the surface is one outward sheet (today's solid boundary had an inner
 // wall there, facing half of the points inwards).

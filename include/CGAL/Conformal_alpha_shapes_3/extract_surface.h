@@ -40,7 +40,9 @@ struct Surface_report : Surface_counts
   std::size_t number_of_parts = 0;
   /// sheets without border
   std::size_t number_of_closed_parts = 0;
-  /// pieces grown separately and reversed to follow the orientation rule
+  /// pieces grown separately that were turned to follow the orientation
+  /// rule (from the canonical orientation in which the advancing front's
+  /// surface is kept)
   std::size_t number_of_reversed_parts = 0;
   /// whether reference normals decided the orientation
   bool oriented_by_reference_normals = false;

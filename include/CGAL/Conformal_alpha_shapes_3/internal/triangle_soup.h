@@ -11,8 +11,10 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <deque>
 #include <numeric>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -91,79 +93,139 @@ inline void pair_neighbors(Advancing_front_soup& soup)
 // Puts the soup in an order that depends only on its triangles, not on the
 // order in which the front grew them (which follows memory addresses where
 // the front's own criteria tie): vertices by shape vertex, triangles
-// lexicographically, each starting at its smallest vertex. Each part keeps
-// the orientation the front gave it, which follows those addresses too (at
-// 3,000,000 points a part came out either way from one run to the next,
-// with the same triangles); the extraction orients the parts afterwards
-// (orient_surface_parts.h), but the order of the triangles still depends
-// on it.
+// lexicographically, each starting at its smallest vertex. The front's
+// orientation of a part follows those addresses too (at 3,000,000 points
+// a part came out either way from one run to the next, with the same
+// triangles): each part is turned so that its smallest triangle runs up
+// from its smallest vertex. The extraction orients the parts afterwards
+// (orient_surface_parts.h); this only makes the order canonical. The soup
+// is rewritten in place and permuted one array at a time: this runs next
+// to the whole shape, near the job's peak of memory.
 inline void put_in_canonical_order(Advancing_front_soup& soup)
 {
   const std::size_t nv = soup.shape_vertex.size(), nt = soup.triangles.size();
-  typedef std::array<std::size_t, 3> Key;
-  auto sorted = [&](const std::array<std::size_t, 3>& t) {
-    Key k = {{soup.shape_vertex[t[0]], soup.shape_vertex[t[1]], soup.shape_vertex[t[2]]}};
+  const std::size_t none = Advancing_front_soup::no_neighbor;
+  typedef std::array<std::size_t, 3> Triple;
+  auto sorted = [&](const Triple& t) {
+    Triple k = {{soup.shape_vertex[t[0]], soup.shape_vertex[t[1]], soup.shape_vertex[t[2]]}};
     std::sort(k.begin(), k.end());
     return k;
   };
-  // a vertex standing for a shape vertex more than once is told apart by
-  // the smallest triangle it is on
-  const std::size_t big = std::size_t(-1);
-  std::vector<Key> first_triangle(nv, Key{{big, big, big}});
-  for(const std::array<std::size_t, 3>& t : soup.triangles)
-    for(std::size_t v : t)
-      first_triangle[v] = (std::min)(first_triangle[v], sorted(t));
-  std::vector<std::size_t> vertex_order(nv);
-  std::iota(vertex_order.begin(), vertex_order.end(), std::size_t(0));
-  std::sort(vertex_order.begin(), vertex_order.end(), [&](std::size_t x, std::size_t y) {
-    return std::tie(soup.shape_vertex[x], first_triangle[x]) < std::tie(soup.shape_vertex[y], first_triangle[y]);
-  });
-  std::vector<std::size_t> new_vertex(nv);
-  std::vector<std::size_t> shape_vertex(nv);
-  for(std::size_t i = 0; i < nv; ++i)
+
+  // the new vertex numbers; a vertex standing for a shape vertex more than
+  // once is told apart by the smallest triangle it is on
   {
-    new_vertex[vertex_order[i]] = i;
-    shape_vertex[i] = soup.shape_vertex[vertex_order[i]];
+    std::vector<Triple> first_triangle(nv, Triple{{none, none, none}});
+    for(const Triple& t : soup.triangles)
+      for(std::size_t v : t)
+        first_triangle[v] = (std::min)(first_triangle[v], sorted(t));
+    std::vector<std::size_t> vertex_order(nv);
+    std::iota(vertex_order.begin(), vertex_order.end(), std::size_t(0));
+    std::sort(vertex_order.begin(), vertex_order.end(), [&](std::size_t x, std::size_t y) {
+      return std::tie(soup.shape_vertex[x], first_triangle[x]) < std::tie(soup.shape_vertex[y], first_triangle[y]);
+    });
+    std::vector<std::size_t> new_vertex(nv), shape_vertex(nv);
+    for(std::size_t i = 0; i < nv; ++i)
+    {
+      new_vertex[vertex_order[i]] = i;
+      shape_vertex[i] = soup.shape_vertex[vertex_order[i]];
+    }
+    for(Triple& t : soup.triangles)
+      for(std::size_t& v : t)
+        v = new_vertex[v];
+    soup.shape_vertex = std::move(shape_vertex);
   }
 
-  // triangles renumbered and rotated to start at their smallest vertex,
-  // with their neighbors (opposite to each vertex) rotated alike
-  std::vector<std::array<std::size_t, 3> > triangles(nt), neighbors(nt);
+  // whether each triangle is turned with its part: a first walk over the
+  // part finds its smallest triangle, a second one marks the part (a
+  // breadth-first walk, whose queue stays a front across the part)
+  auto smallest_corner = [](const Triple& v) {
+    return v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+  };
+  auto sorted_new = [](Triple t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  enum : char { unseen, seen, kept, turned };
+  std::vector<char> state(nt, unseen);
+  std::deque<std::size_t> queue;
+  auto walk_part = [&](std::size_t seed, char from, char to, auto&& visit) {
+    state[seed] = to;
+    queue.push_back(seed);
+    while(!queue.empty())
+    {
+      const std::size_t t = queue.front();
+      queue.pop_front();
+      visit(t);
+      for(std::size_t n : soup.neighbors[t])
+        if(n != none && state[n] == from)
+        {
+          state[n] = to;
+          queue.push_back(n);
+        }
+    }
+  };
+  for(std::size_t seed = 0; seed < nt; ++seed)
+  {
+    if(state[seed] != unseen)
+      continue;
+    std::size_t smallest = seed;
+    Triple smallest_key = sorted_new(soup.triangles[seed]);
+    walk_part(seed, unseen, seen, [&](std::size_t t) {
+      const Triple key = sorted_new(soup.triangles[t]);
+      if(key < smallest_key)
+      {
+        smallest = t;
+        smallest_key = key;
+      }
+    });
+    const Triple& v = soup.triangles[smallest];
+    const int r = smallest_corner(v);
+    walk_part(seed, seen, v[(r + 1) % 3] > v[(r + 2) % 3] ? turned : kept, [](std::size_t) {});
+  }
+
+  // each triangle turned with its part and rotated to start at its
+  // smallest vertex, with its neighbors (opposite to each vertex) moved
+  // alike
   for(std::size_t t = 0; t < nt; ++t)
   {
-    std::array<std::size_t, 3> v;
-    for(int k = 0; k < 3; ++k)
-      v[k] = new_vertex[soup.triangles[t][k]];
-    const int r = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    Triple v = soup.triangles[t], n = soup.neighbors[t];
+    if(state[t] == turned)
+    {
+      std::swap(v[1], v[2]);
+      std::swap(n[1], n[2]);
+    }
+    const int r = smallest_corner(v);
     for(int k = 0; k < 3; ++k)
     {
-      triangles[t][k] = v[(k + r) % 3];
-      neighbors[t][k] = soup.neighbors[t][(k + r) % 3];
+      soup.triangles[t][k] = v[(k + r) % 3];
+      soup.neighbors[t][k] = n[(k + r) % 3];
     }
   }
+  state = std::vector<char>();
+
   std::vector<std::size_t> triangle_order(nt);
   std::iota(triangle_order.begin(), triangle_order.end(), std::size_t(0));
   std::sort(triangle_order.begin(), triangle_order.end(),
-            [&](std::size_t x, std::size_t y) { return triangles[x] < triangles[y]; });
+            [&](std::size_t x, std::size_t y) { return soup.triangles[x] < soup.triangles[y]; });
+  auto permuted = [&](const auto& by_old) {
+    typename std::decay<decltype(by_old)>::type by_new;
+    by_new.reserve(nt);
+    for(std::size_t t : triangle_order)
+      by_new.push_back(by_old[t]);
+    return by_new;
+  };
+  soup.triangles = permuted(soup.triangles);
+  soup.neighbors = permuted(soup.neighbors);
+  soup.values = permuted(soup.values);
   std::vector<std::size_t> new_triangle(nt);
   for(std::size_t i = 0; i < nt; ++i)
     new_triangle[triangle_order[i]] = i;
-  Advancing_front_soup ordered;
-  ordered.shape_vertex = std::move(shape_vertex);
-  ordered.triangles.reserve(nt);
-  ordered.neighbors.reserve(nt);
-  ordered.values.reserve(nt);
-  for(std::size_t t : triangle_order)
-  {
-    ordered.triangles.push_back(triangles[t]);
-    std::array<std::size_t, 3> n = neighbors[t];
+  triangle_order = std::vector<std::size_t>();
+  for(Triple& n : soup.neighbors)
     for(std::size_t& x : n)
-      if(x != Advancing_front_soup::no_neighbor)
+      if(x != none)
         x = new_triangle[x];
-    ordered.neighbors.push_back(n);
-    ordered.values.push_back(soup.values[t]);
-  }
-  soup = std::move(ordered);
 }
 
 // The soup at scale `a` cut from the soup grown with no bound: the
