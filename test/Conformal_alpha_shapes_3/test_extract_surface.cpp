@@ -36,6 +36,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -504,6 +506,129 @@ BOOST_AUTO_TEST_CASE(canonical_soup_order_ignores_how_the_front_gave_it)
   }
   // the strip is one part: its triangles are neighbors
   BOOST_TEST(reference.neighbors[0][0] == 1u);
+}
+
+// The same on random soups: closed tetrahedra, open and closed fans, and
+// strips whose last soup vertex may stand for the shape vertex of their
+// first (as where the front met itself), each given in a random numbering,
+// triangle order, rotation and orientation of each part. The canonical soup
+// also keeps every neighbor across its edge, running the other way.
+BOOST_AUTO_TEST_CASE(canonical_soup_order_on_random_soups)
+{
+  typedef std::array<std::size_t, 3> Triangle;
+  typedef CAS3::internal::Advancing_front_soup Soup;
+  std::mt19937 random(5);
+  auto below = [&](std::size_t n) { return std::size_t(random() % n); };
+  for(int trial = 0; trial < 300; ++trial)
+  {
+    std::vector<std::vector<Triangle> > parts;  // over soup vertices
+    std::vector<std::size_t> shape_vertex;      // by soup vertex
+    auto vertex = [&]() {
+      shape_vertex.push_back(shape_vertex.size());
+      return shape_vertex.size() - 1;
+    };
+    for(std::size_t p = 0, n = 1 + below(4); p < n; ++p)
+    {
+      std::vector<Triangle> part;
+      const std::size_t kind = below(3);
+      if(kind == 0)
+      {
+        const std::size_t a = vertex(), b = vertex(), c = vertex(), d = vertex();
+        part = {{{a, b, c}}, {{a, d, b}}, {{b, d, c}}, {{a, c, d}}};
+      }
+      else if(kind == 1)
+      {
+        const std::size_t center = vertex(), k = 3 + below(4);
+        std::vector<std::size_t> rim(k);
+        for(std::size_t& v : rim)
+          v = vertex();
+        for(std::size_t i = 0, triangles = below(2) ? k : k - 1; i < triangles; ++i)
+          part.push_back({{center, rim[i], rim[(i + 1) % k]}});
+      }
+      else
+      {
+        const std::size_t length = 2 + below(3);
+        std::vector<std::size_t> a(length + 1), b(length + 1);
+        for(std::size_t i = 0; i <= length; ++i)
+        {
+          a[i] = vertex();
+          b[i] = vertex();
+        }
+        for(std::size_t i = 0; i < length; ++i)
+        {
+          part.push_back({{a[i], b[i], a[i + 1]}});
+          part.push_back({{b[i], b[i + 1], a[i + 1]}});
+        }
+        if(below(2))
+          shape_vertex[b[length]] = shape_vertex[a[0]];
+      }
+      parts.push_back(part);
+    }
+
+    auto canonical = [&](bool as_built) {
+      std::vector<std::size_t> number(shape_vertex.size());
+      std::iota(number.begin(), number.end(), std::size_t(0));
+      if(!as_built)
+        std::shuffle(number.begin(), number.end(), random);
+      Soup soup;
+      soup.shape_vertex.resize(shape_vertex.size());
+      for(std::size_t v = 0; v < shape_vertex.size(); ++v)
+        soup.shape_vertex[number[v]] = shape_vertex[v];
+      std::vector<std::pair<Triangle, double> > given;
+      for(const std::vector<Triangle>& part : parts)
+      {
+        const bool turned = !as_built && below(2) == 1;
+        for(Triangle t : part)
+        {
+          for(std::size_t& v : t)
+            v = number[v];
+          if(turned)
+            std::swap(t[1], t[2]);
+          if(!as_built)
+            std::rotate(t.begin(), t.begin() + std::ptrdiff_t(below(3)), t.end());
+          given.emplace_back(t, double(given.size()));
+        }
+      }
+      if(!as_built)
+        std::shuffle(given.begin(), given.end(), random);
+      for(const std::pair<Triangle, double>& t : given)
+      {
+        soup.triangles.push_back(t.first);
+        soup.values.push_back(t.second);
+      }
+      CAS3::internal::pair_neighbors(soup);
+      CAS3::internal::put_in_canonical_order(soup);
+      return soup;
+    };
+
+    const Soup reference = canonical(true);
+    std::size_t wrong = 0;
+    for(std::size_t t = 0; t < reference.triangles.size(); ++t)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t n = reference.neighbors[t][k];
+        if(n == Soup::no_neighbor)
+          continue;
+        const std::size_t a = reference.triangles[t][(k + 1) % 3], b = reference.triangles[t][(k + 2) % 3];
+        bool back = false;
+        for(int j = 0; j < 3; ++j)
+          back = back || (reference.triangles[n][(j + 1) % 3] == b && reference.triangles[n][(j + 2) % 3] == a
+                          && reference.neighbors[n][j] == t);
+        wrong += back ? 0 : 1;
+      }
+    BOOST_TEST_CONTEXT("trial " << trial)
+    {
+      BOOST_TEST(wrong == 0u);
+      for(int variant = 0; variant < 4; ++variant)
+      {
+        const Soup other = canonical(false);
+        BOOST_TEST((other.shape_vertex == reference.shape_vertex));
+        BOOST_TEST((other.triangles == reference.triangles));
+        BOOST_TEST((other.neighbors == reference.neighbors));
+        BOOST_TEST((other.values == reference.values));
+      }
+    }
+  }
 }
 
 // Noise of 0.1 and 0.3 spacings along the normal: the points are smoothed,
