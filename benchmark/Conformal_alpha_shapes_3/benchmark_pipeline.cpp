@@ -40,10 +40,11 @@
 // `--threads 1` runs the parallel stages serially in the same binary, for
 // the serial-versus-parallel speedup (the Delaunay build and jet fitting are
 // serial either way). Without TBB the option is refused.
-// Like the program, it keeps malloc to one arena (cas3_malloc_arena.h)
-// unless MALLOC_ARENA_MAX is set. The environment's GLIBC_TUNABLES is printed: with
-// glibc.malloc.hugetlb=1, malloc asks for transparent huge pages, which
-// changes every stage's time where the kernel gives them only on request.
+// Like the program, it has malloc ask for transparent huge pages where the
+// kernel gives them only on request, unless GLIBC_TUNABLES names
+// glibc.malloc.hugetlb already, and keeps malloc to one arena unless
+// MALLOC_ARENA_MAX is set (cas3_malloc_policy.h); both settings are printed.
+// Huge pages change every stage's time, the Delaunay build's too.
 // Within a child, the peak of each stage comes from VmHWM after resetting it
 // (/proc/self/clear_refs 5) at the stage's start; "added" is that peak less
 // the resident memory when the child started (the input points). The job's
@@ -66,7 +67,7 @@
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
 #include "cas3_curvature_output.h"
-#include "cas3_malloc_arena.h"
+#include "cas3_malloc_policy.h"
 #include "cas3_read_point_cloud.h"
 
 #include <algorithm>
@@ -616,7 +617,9 @@ void run(const Options& o, std::ofstream& csv, const Input& in)
 
 int main(int argc, char* argv[])
 {
-  cas3::use_one_malloc_arena();  // as the program does; inherited by every child
+  // as the program does; inherited by every child
+  cas3::use_transparent_huge_pages(argv);
+  cas3::use_one_malloc_arena();
   const Options o = parse(argc, argv);
 #ifdef CGAL_LINKED_WITH_TBB
   // set before any child is forked, so that every child inherits it
@@ -632,7 +635,7 @@ int main(int argc, char* argv[])
 #endif
   std::printf("threads: %s\n", o.threads > 0 ? std::to_string(o.threads).c_str() : "TBB's default");
   // whether malloc asks for huge pages changes every stage's time where
-  // the kernel gives them only on request (the manual, "Performance")
+  // the kernel gives them only on request (the manual, "The allocator")
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   const char* arenas = std::getenv("MALLOC_ARENA_MAX");
   std::printf("GLIBC_TUNABLES: %s; malloc arenas: %s\n", tunables ? tunables : "unset",

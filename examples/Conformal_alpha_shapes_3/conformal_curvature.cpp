@@ -9,7 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "cas3_curvature_output.h"
-#include "cas3_malloc_arena.h"
+#include "cas3_malloc_policy.h"
 #include "cas3_read_point_cloud.h"
 
 #include <algorithm>
@@ -77,7 +77,11 @@ const char* const usage =
   "The points are recentered and rescaled before the work (results are in the\n"
   "input's units); isolated far outliers are left out and get outlier = 1.\n"
   "A failed run exits with status 1 and one line on stderr, and leaves DIR\n"
-  "as it was.\n";
+  "as it was.\n"
+  "Where the kernel gives transparent huge pages only on request, the program\n"
+  "starts itself again with glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES\n"
+  "(faster on large inputs), unless GLIBC_TUNABLES names that tunable already\n"
+  "(glibc.malloc.hugetlb=0 keeps malloc's default).\n";
 
 // A failure with a one-line reason for the user.
 struct Failure : std::runtime_error
@@ -561,6 +565,7 @@ int run(const Options& o)
 
 int main(int argc, char* argv[])
 {
+  cas3::use_transparent_huge_pages(argv);
   cas3::use_one_malloc_arena();
   try
   {
