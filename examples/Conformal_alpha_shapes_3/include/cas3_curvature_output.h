@@ -82,6 +82,24 @@ inline void put_value_properties(std::ostream& header, const Layer& layer)
     header << "property float " << Layer::value_names()[j] << "_" << layer.label << "\n";
 }
 
+// Asks the processor to bring the memory at `p` into its caches.
+inline void prefetch(const void* p)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
+// The same for the values of point i in `layer` (60 bytes: up to two lines).
+inline void prefetch_values(const Layer& layer, std::size_t i)
+{
+  const float* row = layer.values.data() + i * Layer::number_of_values;
+  prefetch(row);
+  prefetch(row + Layer::number_of_values - 1);
+}
+
 class Row_writer
 {
 public:
@@ -201,9 +219,25 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
          << "property list uchar int vertex_indices\nend_header\n";
   out << header.str();
   output_detail::Row_writer rows(out);
+  // the rows are read by input index, out of memory order: each vertex asks
+  // for the rows of the one `ahead` places later (at 10,000,000 points the
+  // file took 33 s to write, the point cloud's, read in order, 5 s)
+  std::vector<std::size_t> input_in_order;
+  input_in_order.reserve(surface.number_of_vertices());
+  for(Vertex v : surface.vertices())
+    input_in_order.push_back(input_index[v]);
+  const std::size_t ahead = 16;
+  std::size_t k = 0;
   for(Vertex v : surface.vertices())
   {
-    const std::size_t i = input_index[v];
+    if(k + ahead < input_in_order.size())
+    {
+      const std::size_t later = input_in_order[k + ahead];
+      output_detail::prefetch(&points[later]);
+      for(const Layer* layer = first; layer != last; ++layer)
+        output_detail::prefetch_values(*layer, later);
+    }
+    const std::size_t i = input_in_order[k++];
     rows.put_position(points[i]);
     rows.put(std::uint32_t(i));
     for(const Layer* layer = first; layer != last; ++layer)
