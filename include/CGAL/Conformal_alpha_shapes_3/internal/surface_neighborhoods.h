@@ -146,11 +146,10 @@ public:
           m_found.push_back(u);
           m_squared_distance.push_back(pending.squared_distances[k]);
         }
-        for(std::size_t e = g.first[u]; e < g.first[u + 1]; ++e)
+        const std::size_t reached = mark_neighbors(g, u);
+        for(std::size_t e = 0; e < reached; ++e)
         {
-          const std::size_t w = g.adjacent[e];
-          if(!mark(w))
-            continue;
+          const std::size_t w = m_reached[e];
           const double d2 = (g.points[w] - p).squaredNorm();
           std::size_t at = level;
           while(at < radii.size() && d2 > m_squared_radii[at])
@@ -175,12 +174,14 @@ public:
     {
       const std::size_t end = m_found.size();
       for(std::size_t k = begin; k < end; ++k)
-        for(std::size_t e = g.first[m_found[k]]; e < g.first[m_found[k] + 1]; ++e)
-          if(mark(g.adjacent[e]))
-          {
-            m_found.push_back(g.adjacent[e]);
-            m_squared_distance.push_back((g.points[g.adjacent[e]] - g.points[v]).squaredNorm());
-          }
+      {
+        const std::size_t reached = mark_neighbors(g, m_found[k]);
+        for(std::size_t e = 0; e < reached; ++e)
+        {
+          m_found.push_back(m_reached[e]);
+          m_squared_distance.push_back((g.points[m_reached[e]] - g.points[v]).squaredNorm());
+        }
+      }
       begin = end;
       m_end[ring] = m_found.size() - 1;
     }
@@ -205,18 +206,38 @@ private:
     m_stamp[v] = m_current;
   }
 
-  // true the first time it is called for w in the current search; stamps
-  // of 32 bits keep the array small (it is read for every edge the search
-  // walks), and are cleared when the counter wraps
-  bool mark(std::size_t w)
+  // Marks the neighbors of u as reached by the current search and puts
+  // those it had not reached before in m_reached[0, returned count). Every
+  // neighbor is stamped and written, and the count advanced by whether it
+  // is new: a branch on that, taken for about one edge in six and
+  // unpredictably, cost a fifth of the ball search (1.8 s against 2.3 s for
+  // the five smallest default radii at every vertex of 300,000 noisy
+  // points, one thread). Stamps of 32 bits keep the array small (it is read
+  // for every edge the search walks), and are cleared when the counter
+  // wraps.
+  std::size_t mark_neighbors(const Vertex_graph& g, std::size_t u)
   {
-    if(m_stamp[w] == m_current)
-      return false;
-    m_stamp[w] = m_current;
-    return true;
+    const std::size_t* neighbor = g.adjacent.data() + g.first[u];
+    const std::size_t degree = g.first[u + 1] - g.first[u];
+    if(m_reached.size() < degree)
+      m_reached.resize(degree);
+    std::uint32_t* stamp = m_stamp.data();
+    const std::uint32_t current = m_current;  // the stamps' stores could alias the member
+    std::size_t* reached = m_reached.data();
+    std::size_t count = 0;
+    for(std::size_t e = 0; e < degree; ++e)
+    {
+      const std::size_t w = neighbor[e];
+      const bool is_new = stamp[w] != current;
+      stamp[w] = current;
+      reached[count] = w;
+      count += is_new;
+    }
+    return count;
   }
 
   std::vector<std::uint32_t> m_stamp;  // the search that last marked each vertex
+  std::vector<std::size_t> m_reached;  // see mark_neighbors()
   std::uint32_t m_current = 0;
   std::vector<std::size_t> m_found;
   std::vector<double> m_squared_distance;
