@@ -16,16 +16,18 @@
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/flood_fill.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/poles.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/determinant.h>
+#include <CGAL/Hilbert_sort_3.h>
 #include <CGAL/Iterator_range.h>
+#include <CGAL/Multiscale_sort.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
 
 #include <algorithm>
 #include <atomic>
@@ -816,16 +818,22 @@ private:
                                   "1e-75, out of the range in which circumcenters can be computed in double; "
                                   "rescale the coordinates");
 
-    // sorted with their indices beside them: sorting indices that point
-    // into the array was twice as slow (every comparison a random read)
+    // spatial_sort() without its shuffle, in its 3D settings (Hilbert
+    // leaves of 8 points, rounds of an eighth): a shuffle by the
+    // coordinates alone stands for it, so that the insertion order, and
+    // with it the numbering of the vertices and cells, is the same for any
+    // order of the input. The points are sorted with their indices beside
+    // them: sorting indices that point into the array was twice as slow
+    // (every comparison a random read).
     typedef std::pair<Point, size_type> Point_and_index;
     std::vector<Point_and_index> order;
     order.reserve(points.size());
-    for(size_type i = 0; i < points.size(); ++i)
+    for(size_type i : Conformal_alpha_shapes_3::internal::order_free_permutation(points))
       order.emplace_back(points[i], i);
     std::vector<Point>().swap(points);
-    CGAL::spatial_sort(order.begin(), order.end(),
-                       Spatial_sort_traits_adapter_3<Gt, First_of_pair_property_map<Point_and_index> >());
+    typedef Spatial_sort_traits_adapter_3<Gt, First_of_pair_property_map<Point_and_index> > Sort_traits;
+    typedef Hilbert_sort_3<Sort_traits, Hilbert_sort_median_policy> Hilbert_sort;
+    Multiscale_sort<Hilbert_sort>(Hilbert_sort(Sort_traits(), 8), 64, 0.125)(order.begin(), order.end());
 
     m_input_vertices.assign(order.size(), Vertex_handle());
     // the vertex index of each input point, kept beside its handle: the

@@ -5,6 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_DENOISE_H
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/jet_smoothing.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -14,12 +15,13 @@
 
 #include <Eigen/Dense>
 
-
 #include <algorithm>
-#include <type_traits>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -128,7 +130,9 @@ inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, in
 \ingroup PkgConformalAlphaShapes3Multiscale
 
 The noise of a point sample of a surface, relative to its spacing (the
-manual, "Noise"). At up to 2000 points spread over the sample, a cubic
+manual, "Noise"). At up to 2000 points spread over the sample (chosen by
+their coordinates, so that any order of the same points gives the same
+estimate), a cubic
 height function is fitted by least squares to the 16 (and 24) nearest
 points in their principal frame; the median residual variance, made
 unbiased for Gaussian noise, gives the noise. A cubic follows curvature and
@@ -150,14 +154,14 @@ Noise_estimate estimate_noise(const PointRange& points)
   if(all.size() <= std::size_t(large))
     return estimate;
   const typename Search::Tree tree(all.begin(), all.end());
-  const std::size_t samples = (std::min)(all.size(), std::size_t(2000));
   std::vector<double> variances_small, variances_large;
   double spacing_sum = 0;
+  std::vector<std::pair<double, Eigen::Vector3d> > hits;  // squared distance, point
   std::vector<Eigen::Vector3d> neighbors;
-  for(std::size_t s = 0; s < samples; ++s)
+  for(const std::size_t s : internal::order_free_sample(all, 2000))
   {
-    const Point& p = all[s * all.size() / samples];
-    neighbors.assign(1, Eigen::Vector3d(p.x(), p.y(), p.z()));
+    const Point& p = all[s];
+    hits.clear();
     bool self_skipped = false;
     for(const auto& hit : Search(tree, p, large))
     {
@@ -166,8 +170,19 @@ Noise_estimate estimate_noise(const PointRange& points)
         self_skipped = true;
         continue;
       }
-      neighbors.emplace_back(hit.first.x(), hit.first.y(), hit.first.z());
+      hits.emplace_back(CGAL::to_double(hit.second),
+                        Eigen::Vector3d(CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
+                                        CGAL::to_double(hit.first.z())));
     }
+    // neighbors at equal distance in the order of their coordinates, not
+    // in the order the tree (built from the input order) gives them
+    std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) {
+      return std::make_tuple(a.first, a.second.x(), a.second.y(), a.second.z())
+             < std::make_tuple(b.first, b.second.x(), b.second.y(), b.second.z());
+    });
+    neighbors.assign(1, Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+    for(const auto& hit : hits)
+      neighbors.push_back(hit.second);
     double variance_small = 0, variance_large = 0, spacing = 0, ignored = 0;
     if(!internal::cubic_fit_residual(neighbors, small, variance_small, spacing)
        || !internal::cubic_fit_residual(neighbors, large, variance_large, ignored))

@@ -5,6 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ADVANCING_FRONT_FACETS_H
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/triangle_soup.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
@@ -87,14 +88,7 @@ inline double facet_tie_breaker(std::size_t u, std::size_t v, std::size_t w)
   if(u > v) std::swap(u, v);
   if(v > w) std::swap(v, w);
   if(u > v) std::swap(u, v);
-  std::uint64_t h = 0x9E3779B97F4A7C15ull;
-  for(std::uint64_t x : {std::uint64_t(u), std::uint64_t(v), std::uint64_t(w)})
-  {
-    h ^= x + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-    h ^= h >> 31;
-  }
+  const std::uint64_t h = mix_hash(mix_hash(mix_hash(0, u), v), w);
   return double(h >> 11) / 9007199254740992.0;  // 2^53
 }
 
