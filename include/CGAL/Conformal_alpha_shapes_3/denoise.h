@@ -132,14 +132,14 @@ inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, in
 The noise of a point sample of a surface, relative to its spacing (the
 manual, "Noise"). At up to 2000 points spread over the sample (chosen by
 their coordinates, so that any order of the same points gives the same
-estimate), a cubic
-height function is fitted by least squares to the 16 (and 24) nearest
-points in their principal frame; the median residual variance, made
-unbiased for Gaussian noise, gives the noise. A cubic follows curvature and
-its variation, so clean samples of smooth surfaces read near 0, detailed
-ones (fine bumps a few spacings wide) 0.011 or less; Gaussian noise of
-standard deviation `r` times the spacing reads `r` within 3% for `r` up to
-0.5 (it saturates near 0.7 above). All zero for fewer than 25 points.
+estimate), a cubic height function is fitted by least squares to the 16
+(and 24) nearest points in their principal frame; the median residual
+variance, made unbiased for Gaussian noise, gives the noise. A cubic
+follows curvature and its variation, so clean samples of smooth surfaces
+read near 0, detailed ones (fine bumps a few spacings wide) 0.011 or less;
+Gaussian noise of standard deviation `r` times the spacing reads `r`
+within 3% for `r` up to 0.5 (it saturates near 0.7 above). All zero for
+fewer than 25 points.
 */
 template <class PointRange>
 Noise_estimate estimate_noise(const PointRange& points)
