@@ -304,6 +304,13 @@ public:
       set_surface_properties(surface, estimates.back());
 
     const std::vector<Surface_foot> feet = surface_feet(surface, working, estimates);
+    // the layers are filled vertex by vertex of the shape, whose order the
+    // surface's follows: the reads are then in memory order and each point
+    // costs one scattered store (point by point, its vertex, its surface
+    // vertex and its estimate were three dependent cache misses)
+    std::vector<typename Shape::Vertex_handle> shape_vertex(m_shape.number_of_vertices());  // by vertex index
+    for(const typename Shape::Vertex_handle v : m_shape.finite_vertex_handles())
+      shape_vertex[v->vertex_index()] = v;
     // each neighborhood's estimates are freed once its layer is made, so
     // that the estimates and the layers are not all held at once
     std::vector<std::vector<Point_curvature<Kernel> > > layers;
@@ -312,11 +319,16 @@ public:
       const std::vector<std::size_t> own = surface_vertex_of_shape_vertex(surface, by_surface_vertex);
       std::vector<Point_curvature<Kernel> > per_point(number_of_input_points());
       internal::for_each_index<CGAL::Parallel_if_available_tag>(
-        m_input.input_index.size(), []() { return 0; }, [&](std::size_t i, int&) {
-          Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
-          c = in_input_units(value_at_vertex(m_shape.input_vertex(i), own, surface, working, by_surface_vertex, feet));
-          if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
-            take_other_side(c);
+        shape_vertex.size(), []() { return 0; }, [&](std::size_t k, int&) {
+          const Point_curvature<Kernel> value =
+            in_input_units(value_at_vertex(k, own, surface, working, by_surface_vertex, feet));
+          for(const std::size_t i : m_shape.input_indices(shape_vertex[k]))
+          {
+            Point_curvature<Kernel>& c = per_point[m_input.input_index[i]];
+            c = value;
+            if(!m_reference_normals.empty() && c.normal * m_reference_normals[i] < 0)
+              take_other_side(c);
+          }
         });
       std::vector<internal::Vertex_estimate>().swap(by_surface_vertex);
       layers.push_back(std::move(per_point));
@@ -507,13 +519,13 @@ private:
   }
 
   // The value of the fits on `surface` (`estimates`, by surface vertex
-  // index) at vertex `v` of the shape, in the working frame (see
+  // index) at the vertex of index `v` of the shape, in the working frame (see
   // `estimate_curvatures()`): its own surface vertex's (`own`, from
   // `surface_vertex_of_shape_vertex()`), or else interpolated at the
-  // nearest point of the surface (`feet`, from `surface_feet()`). Made per point rather than kept per
-  // vertex: a layer of values for every vertex was the top of the
-  // curvature stage's memory.
-  Point_curvature<Kernel> value_at_vertex(typename Shape::Vertex_handle v, const std::vector<std::size_t>& own,
+  // nearest point of the surface (`feet`, from `surface_feet()`). Made
+  // as each layer is filled rather than kept per vertex: a layer of values
+  // for every vertex was the top of the curvature stage's memory.
+  Point_curvature<Kernel> value_at_vertex(std::size_t v, const std::vector<std::size_t>& own,
                                           const Surface& surface, const Working_point_map& working,
                                           const std::vector<internal::Vertex_estimate>& estimates,
                                           const std::vector<Surface_foot>& feet) const
@@ -533,7 +545,7 @@ private:
     };
     Point_curvature<Kernel> c;  // NaN everywhere
 
-    const std::size_t own_vertex = own[v->vertex_index()];
+    const std::size_t own_vertex = own[v];
     if(own_vertex != no_surface_vertex)
     {
       const internal::Vertex_estimate& e = estimates[own_vertex];
@@ -542,9 +554,9 @@ private:
     }
 
     // from the nearest point of the surface
-    const auto foot = std::lower_bound(feet.begin(), feet.end(), v->vertex_index(),
+    const auto foot = std::lower_bound(feet.begin(), feet.end(), v,
                                        [](const Surface_foot& f, std::size_t x) { return f.shape_vertex < x; });
-    if(foot == feet.end() || foot->shape_vertex != v->vertex_index())  // the surface is empty
+    if(foot == feet.end() || foot->shape_vertex != v)  // the surface is empty
       return c;
     c.distance = foot->distance;
     if(foot->face == Surface_face())
