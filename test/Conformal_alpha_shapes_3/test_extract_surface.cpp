@@ -360,6 +360,21 @@ struct Sheet_facts
   double agreement = 0;    // share of those whose normal agrees with `truth`
 };
 
+// The points and normals of a file of the shared data (six columns).
+void read_shared_oriented_points(const std::string& name, std::vector<Point>& points, std::vector<Vector>& normals)
+{
+  typedef std::pair<Point, Vector> Point_and_normal;
+  std::vector<Point_and_normal> read;
+  BOOST_REQUIRE(CGAL::IO::read_points(std::string(CAS3_SHARED_DATA) + "/" + name, std::back_inserter(read),
+                                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Point_and_normal>())
+                                        .normal_map(CGAL::Second_of_pair_property_map<Point_and_normal>())));
+  for(const Point_and_normal& pn : read)
+  {
+    points.push_back(pn.first);
+    normals.push_back(pn.second);
+  }
+}
+
 Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vector>& truth,
                         const std::vector<Vector>& given_normals = std::vector<Vector>())
 {
@@ -695,6 +710,23 @@ BOOST_AUTO_TEST_CASE(open_sheets_across_a_gap_agree)
   BOOST_TEST((std::max)(facts.agreement, 1 - facts.agreement) >= 0.99);
 }
 
+// An open sheet that nearly closes round its own center points out of it:
+// on oni.pwn given as x y z only, a blob of 25 points (a hole of 4 edges)
+// faced inwards, joined to the body's sheet beside it (96.6% of the
+// surface's vertices agreed with the file's normals up to one flip; 98.3%
+// with the blob turned out).
+BOOST_AUTO_TEST_CASE(nearly_closed_open_sheets_point_out_of_their_center)
+{
+  if(!shared_data_available())
+    return;
+  std::vector<Point> points;
+  std::vector<Vector> normals;
+  read_shared_oriented_points("oni.pwn", points, normals);
+  const Sheet_facts facts = sheet_facts(points, normals);
+  BOOST_TEST(!facts.report.oriented_by_reference_normals);
+  BOOST_TEST((std::max)(facts.agreement, 1 - facts.agreement) >= 0.98);
+}
+
 // Given normals decide the orientation, even against the default rule
 // (here: the cap given inward normals; the kitten scan with its own).
 BOOST_AUTO_TEST_CASE(orientation_follows_input_normals)
@@ -710,17 +742,9 @@ BOOST_AUTO_TEST_CASE(orientation_follows_input_normals)
 
   if(!shared_data_available())
     return;
-  std::vector<std::pair<Point, Vector> > kitten;
-  BOOST_REQUIRE(CGAL::IO::read_points(std::string(CAS3_SHARED_DATA) + "/kitten.xyz", std::back_inserter(kitten),
-                                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<std::pair<Point, Vector> >())
-                                        .normal_map(CGAL::Second_of_pair_property_map<std::pair<Point, Vector> >())));
   std::vector<Point> points;
   std::vector<Vector> normals;
-  for(const auto& pn : kitten)
-  {
-    points.push_back(pn.first);
-    normals.push_back(pn.second);
-  }
+  read_shared_oriented_points("kitten.xyz", points, normals);
   const Sheet_facts scan = sheet_facts(points, normals, normals);
   BOOST_TEST(scan.coverage >= 0.97);
   BOOST_TEST(scan.agreement >= 0.97);

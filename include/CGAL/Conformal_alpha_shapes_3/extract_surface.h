@@ -177,7 +177,9 @@ other, the gap within 45 degrees of their tangent planes, their normals
 within 45 degrees of parallel: a strip the scan missed, a step whose riser
 it did not sample) face alike too, and point away from the center
 together; sheets offset along their normals (the two faces of a thin wall)
-are not joined, nor are closed sheets.
+are not joined, nor are closed sheets. An open sheet that nearly closes
+round its own center (a blob with a small hole) is not joined either, and
+points out of that center, as a closed sheet does.
 
 Faces and vertices are added to `pmesh`, which is usually empty.
 

@@ -132,12 +132,19 @@ void cut_at_reference_folds(Advancing_front_soup& soup, const PointOf& point, co
 // pairs are outvoted. Two faces of a thin wall (offset along the normal) or
 // sheets that meet at an angle never vote: being near does not tell which
 // way they face. Closed sheets stay alone: they point out of the volume
-// they enclose.
+// they enclose; so do the open sheets that nearly close round their own
+// center (`mark_sheets_round_own_centers()`): a blob beside a sheet does
+// not continue it.
 struct Sheet_groups
 {
   std::vector<std::size_t> group_of_sheet;
   std::vector<char> reverse_in_group;  // by sheet: against its group's first sheet
   std::size_t number_of_groups = 0;
+  // by sheet: whether it is open and nearly closes round its own center,
+  // and then the signed volume of the cone from that center (its parts as
+  // oriented in the sheet)
+  std::vector<char> round_own_center;
+  std::vector<double> own_cone_volume;
 
   // every sheet a group of its own
   static Sheet_groups one_per_sheet(std::size_t number_of_sheets)
@@ -147,9 +154,63 @@ struct Sheet_groups
     std::iota(groups.group_of_sheet.begin(), groups.group_of_sheet.end(), std::size_t(0));
     groups.reverse_in_group.assign(number_of_sheets, 0);
     groups.number_of_groups = number_of_sheets;
+    groups.round_own_center.assign(number_of_sheets, 0);
+    groups.own_cone_volume.assign(number_of_sheets, 0.0);
     return groups;
   }
 };
+
+// The open sheets that nearly close round their own center (a blob with a
+// small hole, as a knob of a statue can be): the cone from the surface's
+// center over such a sheet's hole can outweigh the volume it encloses,
+// and a nearby sheet's border can vote it to face like that sheet; both
+// turned a 25-point blob of `oni.pwn` inwards. A sheet qualifies when the
+// cone from its own center (the area-weighted mean of its triangles'
+// centroids) holds at least half the volume of a sphere of the same area
+// and mean radius: 3 |V| >= A r / 2, where a sphere gives 1 and a flat or
+// gently curved sheet nearly 0.
+template <class Vector, class PointOf>
+void mark_sheets_round_own_centers(const Advancing_front_soup& soup, const Soup_parts& parts,
+                                   const Soup_sheets& sheets, const PointOf& point, Sheet_groups& groups)
+{
+  const std::size_t ns = sheets.size();
+  auto centroid_and_area = [&](std::size_t t, Vector& centroid) {
+    const std::array<std::size_t, 3>& tri = soup.triangles[t];
+    centroid = ((point(tri[0]) - CGAL::ORIGIN) + (point(tri[1]) - CGAL::ORIGIN) + (point(tri[2]) - CGAL::ORIGIN)) / 3.0;
+    return std::sqrt(CGAL::to_double(
+             CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0])).squared_length()))
+           / 2;
+  };
+  std::vector<double> area(ns, 0.0);
+  std::vector<Vector> center(ns, Vector(0, 0, 0));
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const std::size_t sheet = sheets.sheet_of_part[parts.part_of_triangle[t]];
+    Vector c;
+    const double a = centroid_and_area(t, c);
+    area[sheet] += a;
+    center[sheet] = center[sheet] + a * c;
+  }
+  std::vector<double> radius(ns, 0.0);
+  groups.own_cone_volume.assign(ns, 0.0);
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const std::size_t part = parts.part_of_triangle[t], sheet = sheets.sheet_of_part[part];
+    if(sheets.closed[sheet] || !(area[sheet] > 0))
+      continue;
+    const Vector q = center[sheet] / area[sheet];
+    Vector c;
+    radius[sheet] += centroid_and_area(t, c) * std::sqrt(CGAL::to_double((c - q).squared_length()));
+    const std::array<std::size_t, 3>& tri = soup.triangles[t];
+    const Vector area_normal = CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0]));
+    groups.own_cone_volume[sheet] += (sheets.reverse_in_sheet[part] ? -1.0 : 1.0)
+                                     * CGAL::to_double(area_normal * (point(tri[0]) - CGAL::ORIGIN - q)) / 6;
+  }
+  groups.round_own_center.assign(ns, 0);
+  for(std::size_t sheet = 0; sheet < ns; ++sheet)
+    groups.round_own_center[sheet] = char(!sheets.closed[sheet] && area[sheet] > 0
+                                          && 3 * std::abs(groups.own_cone_volume[sheet]) >= 0.5 * radius[sheet]);
+}
 
 template <class Vector, class PointOf>
 Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, const Soup_parts& parts,
@@ -200,6 +261,9 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
       border.push_back(s);
   }
 
+  Sheet_groups groups;
+  mark_sheets_round_own_centers<Vector>(soup, parts, sheets, point, groups);
+
   // votes between two sheets: (sheets, reversed relative to each other) -> count
   std::map<std::tuple<std::size_t, std::size_t, bool>, std::size_t> votes;
   if(!border.empty())
@@ -220,7 +284,8 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
         const double length = std::sqrt(CGAL::to_double(offset.squared_length()));
         const double nu = std::sqrt(CGAL::to_double(normal[u].squared_length()));
         const double nw = std::sqrt(CGAL::to_double(normal[w].squared_length()));
-        if(!(nu > 0 && nw > 0))
+        if(!(nu > 0 && nw > 0) || groups.round_own_center[sheet_of_vertex[u]]
+           || groups.round_own_center[sheet_of_vertex[w]])
           break;
         const double cos_normals = CGAL::to_double(normal[u] * normal[w]) / (nu * nw);
         if(length <= gap * spacing[u] / (std::max)(edges_at[u], 1)
@@ -245,7 +310,6 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
   for(const auto& link : links)
     classes.join(std::get<0>(link.second), std::get<1>(link.second), std::get<2>(link.second));
 
-  Sheet_groups groups;
   std::vector<std::size_t> group_of_root(sheets.size(), none);
   groups.group_of_sheet.resize(sheets.size());
   groups.reverse_in_group.resize(sheets.size());
@@ -271,7 +335,8 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
 //   points away from the center (outwards, for a single view of a convex
 //   object or a building's facades), together with the open sheets it
 //   continues across gaps (`groups`, see `join_open_sheets_across_gaps()`):
-//   the cones of a group are summed.
+//   the cones of a group are summed; an open sheet that nearly closes round
+//   its own center points out of it (`mark_sheets_round_own_centers()`).
 // `point(s)` gives the position of soup vertex `s`, `reference(s)` its
 // reference normal.
 template <class Vector, class PointOf, class ReferenceOf>
@@ -312,6 +377,10 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
       vote[group_of_part(part)] += (reversed_in_group(part) ? -1.0 : 1.0)
                                    * CGAL::to_double(area_normal * p0);  // six times the signed cone volume
   }
+  if(!has_reference)
+    for(std::size_t sheet = 0; sheet < sheets.size(); ++sheet)
+      if(groups.round_own_center[sheet])  // alone in its group, see join_open_sheets_across_gaps()
+        vote[groups.group_of_sheet[sheet]] = groups.own_cone_volume[sheet];
   std::vector<char> reverse(parts.size(), 0);
   for(std::size_t p = 0; p < parts.size(); ++p)
     reverse[p] = has_reference ? char(vote[p] < 0 ? 1 : 0)
