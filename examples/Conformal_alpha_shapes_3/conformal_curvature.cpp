@@ -477,7 +477,7 @@ int run(const Options& o)
   {
     const double a = analysis->scale_value(scale);
     Analysis::Surface surface;
-    const CAS3::Surface_report report = analysis->extract_surface(a, surface);
+    const CAS3::Surface_report report = analysis->surface(a, surface);
     progress("scale " + scale.label() + ": surface of " + std::to_string(report.number_of_faces) + " faces");
     summary << "scale " << scale.label() << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
             << " closed, " << report.number_of_open_parts() << " open), "

@@ -10,6 +10,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/curvature_estimator.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_estimation.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
+#include <CGAL/Conformal_alpha_shapes_3/scales_and_neighborhoods.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -45,6 +46,28 @@ struct Principal_curvatures_and_directions
   typename GT::Vector_3 max_direction = typename GT::Vector_3(std::numeric_limits<double>::quiet_NaN(),
     std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
   typename GT::Vector_3 min_direction = max_direction;
+};
+
+/// \ingroup PkgConformalAlphaShapes3Curvature
+/// The curvature at a vertex, as `estimate_vertex_curvatures()` estimates it
+/// for several neighborhoods at once; every number is NaN where it is undefined.
+template <typename GT>
+struct Vertex_curvature
+{
+  /// the unit normal
+  typename GT::Vector_3 normal = typename GT::Vector_3(std::numeric_limits<double>::quiet_NaN(),
+    std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
+  /// `max_curvature` is `k1`, `max_direction` `d1`; `min_curvature` is `k2`
+  Principal_curvatures_and_directions<GT> principal;
+  /// the radius of the neighborhood of the fit (for rings: the farthest neighbor used)
+  typename GT::FT radius = std::numeric_limits<double>::quiet_NaN();
+
+  /// the mean curvature `H`
+  typename GT::FT mean_curvature() const { return (principal.max_curvature + principal.min_curvature) / 2; }
+  /// the Gaussian curvature `K`
+  typename GT::FT gaussian_curvature() const { return principal.max_curvature * principal.min_curvature; }
+  /// whether the curvature is defined
+  bool is_defined() const { return std::isfinite(principal.max_curvature) && std::isfinite(principal.min_curvature); }
 };
 
 namespace internal {
@@ -97,15 +120,13 @@ struct Curvature_maps
         CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_neighborhood_radius_map), Default_scalar_map()))
   {}
 
-  static Vector_3 to_vector(const Vec3& v) { return Vector_3(FT(v.x()), FT(v.y()), FT(v.z())); }
-
-  void write(vertex_descriptor v, const Local_curvature& c, double used_radius) const
+  void write(vertex_descriptor v, const Vertex_curvature<GT>& c) const
   {
-    put(radius, v, FT(used_radius));
-    put(normal, v, to_vector(c.normal));
-    put(mean, v, FT((c.k1 + c.k2) / 2));
-    put(gaussian, v, FT(c.k1 * c.k2));
-    put(principal, v, Principal{FT(c.k1), FT(c.k2), to_vector(c.d1), to_vector(c.d2)});
+    put(radius, v, c.radius);
+    put(normal, v, c.normal);
+    put(mean, v, c.mean_curvature());
+    put(gaussian, v, c.gaussian_curvature());
+    put(principal, v, c.principal);
   }
 
   Normal_map normal;
@@ -132,6 +153,35 @@ Neighborhood_rule get_neighborhood_rule(const NamedParameters& np, Curvature_est
   rule.candidates = choose_parameter(get_parameter(np, internal_np_cas3::neighborhood_radii), std::vector<double>());
   check_neighborhood_rule(rule, estimator);
   return rule;
+}
+
+// The rule of `neighborhood`, whose spacings are `spacing` long.
+inline Neighborhood_rule neighborhood_rule(const Neighborhood& neighborhood, double spacing)
+{
+  Neighborhood_rule rule;
+  switch(neighborhood.kind())
+  {
+    case Neighborhood::RINGS: rule.rings = int(neighborhood.value()); break;
+    case Neighborhood::RADIUS: rule.radius = neighborhood.value(); break;
+    case Neighborhood::SPACINGS: rule.radius = neighborhood.value() * spacing; break;
+    case Neighborhood::AUTOMATIC:
+      for(double m : Neighborhood::automatic_radii())
+        rule.candidates.push_back(m * spacing);
+      break;
+  }
+  return rule;
+}
+
+template <typename GT>
+Vertex_curvature<GT> to_vertex_curvature(const Vertex_estimate& e)
+{
+  auto vector = [](const Vec3& v) { return typename GT::Vector_3(v.x(), v.y(), v.z()); };
+  Vertex_curvature<GT> c;
+  c.normal = vector(e.curvature.normal);
+  c.principal = Principal_curvatures_and_directions<GT>{e.curvature.k1, e.curvature.k2, vector(e.curvature.d1),
+                                                        vector(e.curvature.d2)};
+  c.radius = e.radius;
+  return c;
 }
 
 } // namespace internal
@@ -161,8 +211,8 @@ Neighborhood, by the first of these named parameters given:
   fits at the four smallest radii, by fitting `s^2(r) = sigma^2 + beta r^10`
   (a clean sample reads about 0), and raised 7 times (smoothed noisy points
   hide most of their noise from the residuals, not from the curvature; given
-  the sample's noise before smoothing, as `Multiscale_curvatures` does, that
-  is used instead). Each fit gives the standard error of the mean curvature
+  the sample's noise before smoothing, `noise_level`, as
+  `multiscale_curvatures()` does, that is used instead). Each fit gives the standard error of the mean curvature
   that `sigma` implies; its bias is modeled as `c r^2` (what the correction
   leaves: the curvature's variation), `c` fitted to the fits' mean
   curvatures; the radius of least `c^2 r^4` plus squared standard error is
@@ -260,6 +310,11 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamType{`Curvature_estimator`}
     \cgalParamDefault{`QUADRIC_FIT`}
   \cgalParamNEnd
+  \cgalParamNBegin{noise_level}
+    \cgalParamDescription{the standard deviation of the sample's noise along the normal, in the units of the points, before any smoothing (`Noise_estimate::noise` times `Noise_estimate::spacing`), for the choice among `neighborhood_radii`}
+    \cgalParamType{`double`}
+    \cgalParamDefault{0: measured at each vertex from the fits}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 Here `GT` is the kernel of the points of the vertex point map.
@@ -279,6 +334,7 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
                                        const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename internal::Curvature_maps<PolygonMesh, NamedParameters>::GT GT;
   const internal::Curvature_maps<PolygonMesh, NamedParameters> maps(np);
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, pmesh));
@@ -287,16 +343,85 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
   const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
   const internal::Vertex_graph graph = internal::vertex_graph(pmesh, vpm, vertex_index);
   const std::vector<internal::Vec3> normals = internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index);
+  const double noise =
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::noise_level), 0.);
   const std::vector<internal::Vertex_estimate> estimates =
-    internal::estimate_at_every_vertex<ConcurrencyTag>(graph, normals, rules, estimator).front();
+    internal::estimate_at_every_vertex<ConcurrencyTag>(graph, normals, rules, estimator, noise).front();
   std::size_t undefined = 0;
   for(vertex_descriptor v : vertices(pmesh))
   {
     const internal::Vertex_estimate& e = estimates[get(vertex_index, v)];
     undefined += e.defined() ? 0 : 1;
-    maps.write(v, e.curvature, e.radius);
+    maps.write(v, internal::to_vertex_curvature<GT>(e));
   }
   return undefined;
+}
+
+/*!
+\ingroup PkgConformalAlphaShapes3Curvature
+The same estimate for several neighborhoods at once, returned by
+neighborhood (in their order), then by vertex index: cheaper than one call
+per neighborhood, since each vertex's neighborhoods are found by one search,
+the largest, and each fit runs on a part of it. Neighborhoods in sample
+spacings (`Neighborhood::spacings()`, and the candidates of
+`Neighborhood::automatic()`) are multiples of `sample_spacing`.
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map, vertex_index_map, estimator, noise_level}
+    \cgalParamDescription{as above}
+  \cgalParamNEnd
+  \cgalParamNBegin{sample_spacing}
+    \cgalParamDescription{the length of a sample spacing, in the units of the points (`Noise_estimate::spacing`)}
+    \cgalParamType{`double`}
+    \cgalParamDefault{0: no neighborhood may be in spacings}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument as above, and for a neighborhood in spacings
+without a positive `sample_spacing`.
+*/
+template <typename ConcurrencyTag = CGAL::Sequential_tag,
+          typename PolygonMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+std::vector<std::vector<Vertex_curvature<typename internal::Curvature_maps<PolygonMesh, NamedParameters>::GT> > >
+estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborhood>& neighborhoods,
+                           const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef typename internal::Curvature_maps<PolygonMesh, NamedParameters>::GT GT;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, pmesh));
+  const Curvature_estimator estimator = internal::get_estimator<PolygonMesh>(np);
+  const double spacing = choose_parameter(get_parameter(np, internal_np_cas3::sample_spacing), 0.);
+  std::vector<internal::Neighborhood_rule> rules;
+  for(const Neighborhood& neighborhood : neighborhoods)
+  {
+    const bool in_spacings = neighborhood.kind() == Neighborhood::SPACINGS || neighborhood.kind() == Neighborhood::AUTOMATIC;
+    if(in_spacings && !(spacing > 0))
+      throw std::invalid_argument("estimate_vertex_curvatures: a neighborhood in sample spacings needs a positive "
+                                  "sample_spacing");
+    rules.push_back(internal::neighborhood_rule(neighborhood, spacing));
+    internal::check_neighborhood_rule(rules.back(), estimator);
+  }
+  std::vector<std::vector<internal::Vertex_estimate> > estimates;
+  {
+    // the graph is freed before the estimates are converted
+    const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
+    const internal::Vertex_graph graph = internal::vertex_graph(pmesh, vpm, vertex_index);
+    estimates = internal::estimate_at_every_vertex<ConcurrencyTag>(
+      graph, internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index), rules, estimator,
+      choose_parameter(get_parameter(np, internal_np_cas3::noise_level), 0.));
+  }
+  std::vector<std::vector<Vertex_curvature<GT> > > curvatures(estimates.size());
+  for(std::size_t r = 0; r < estimates.size(); ++r)
+  {
+    curvatures[r].reserve(estimates[r].size());
+    for(const internal::Vertex_estimate& e : estimates[r])
+      curvatures[r].push_back(internal::to_vertex_curvature<GT>(e));
+    std::vector<internal::Vertex_estimate>().swap(estimates[r]);
+  }
+  return curvatures;
 }
 
 /*!
@@ -332,7 +457,8 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
   internal::Vertex_estimate estimate;
   estimation.estimate(0, workspace, &estimate);
-  maps.write(v, estimate.curvature, estimate.radius);
+  typedef typename internal::Curvature_maps<PolygonMesh, NamedParameters>::GT GT;
+  maps.write(v, internal::to_vertex_curvature<GT>(estimate));
   return estimate.defined();
 }
 

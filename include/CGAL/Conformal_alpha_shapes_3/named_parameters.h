@@ -22,7 +22,7 @@ enum estimator_t { estimator };
 enum vertex_input_index_map_t { vertex_input_index_map };
 enum local_scale_estimator_t { local_scale_estimator };
 enum local_scales_t { local_scales };
-enum minimum_fraction_on_surface_t { minimum_fraction_on_surface };
+enum coverage_t { coverage };
 enum scales_t { scales };
 enum reference_normals_t { reference_normals };
 enum surface_extraction_t { surface_extraction };
@@ -32,6 +32,8 @@ enum neighborhood_radius_t { neighborhood_radius };
 enum neighborhood_radii_t { neighborhood_radii };
 enum vertex_neighborhood_radius_map_t { vertex_neighborhood_radius_map };
 enum neighborhoods_t { neighborhoods };
+enum noise_level_t { noise_level };
+enum sample_spacing_t { sample_spacing };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -74,7 +76,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale_estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(local_scales)
-CGAL_CAS3_ADD_NAMED_PARAMETER(minimum_fraction_on_surface)
+CGAL_CAS3_ADD_NAMED_PARAMETER(coverage)
 CGAL_CAS3_ADD_NAMED_PARAMETER(scales)
 CGAL_CAS3_ADD_NAMED_PARAMETER(reference_normals)
 CGAL_CAS3_ADD_NAMED_PARAMETER(surface_extraction)
@@ -84,6 +86,8 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhood_radius)
 CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhood_radii)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_neighborhood_radius_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhoods)
+CGAL_CAS3_ADD_NAMED_PARAMETER(noise_level)
+CGAL_CAS3_ADD_NAMED_PARAMETER(sample_spacing)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

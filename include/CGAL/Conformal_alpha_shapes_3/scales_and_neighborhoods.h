@@ -5,9 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_SCALES_AND_NEIGHBORHOODS_H
 
 // The vocabulary of a layer of multi-scale curvature: the scale `a` of the
-// surface, the neighborhood of the fit, and what a point gets.
-
-#include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>
+// surface and the neighborhood of the fit.
 
 #include <algorithm>
 #include <cmath>
@@ -161,50 +159,6 @@ private:
   Neighborhood(Kind kind, double value) : m_kind(kind), m_value(value) {}
   Kind m_kind;
   double m_value;
-};
-
-/*!
-\ingroup PkgConformalAlphaShapes3Multiscale
-Where the values of an input point at one scale come from.
-*/
-enum Point_source
-{
-  /// the fit at the point's own vertex of the surface
-  SURFACE_VERTEX,
-  /// the values of the surface at its point nearest to the input point,
-  /// interpolated over the facet there: the point is not a vertex of the
-  /// surface, or its own fit is undefined
-  NEAREST_SURFACE_POINT,
-  /// none: the point is farther from the surface than
-  /// `Multiscale_curvatures::far_from_surface()` local spacings, or the surface
-  /// near it has no defined values; every number is NaN
-  NO_VALUE
-};
-
-/*!
-\ingroup PkgConformalAlphaShapes3Multiscale
-The curvature of the surface at one input point, at one scale and
-neighborhood; every number is NaN where `source` is `NO_VALUE`.
-*/
-template <class Kernel>
-struct Point_curvature
-{
-  Point_source source = NO_VALUE;
-  /// from the (smoothed) point to the surface point whose values these are
-  /// (0 on its own vertex; NaN when the surface is empty)
-  double distance = std::numeric_limits<double>::quiet_NaN();
-  /// the radius of the neighborhood of the fit (for rings: the farthest
-  /// neighbor used); interpolated like the values
-  double radius = std::numeric_limits<double>::quiet_NaN();
-  typename Kernel::Vector_3 normal = typename Kernel::Vector_3(std::numeric_limits<double>::quiet_NaN(),
-    std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
-  typename Kernel::FT mean_curvature = std::numeric_limits<double>::quiet_NaN();
-  typename Kernel::FT gaussian_curvature = std::numeric_limits<double>::quiet_NaN();
-  /// `max_curvature` is `k1`, `max_direction` `d1`; `min_curvature` is `k2`
-  Principal_curvatures_and_directions<Kernel> principal;
-
-  /// whether the values are the point's own vertex's
-  bool on_surface() const { return source == SURFACE_VERTEX; }
 };
 
 } // namespace Conformal_alpha_shapes_3

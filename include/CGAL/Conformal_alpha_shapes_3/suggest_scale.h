@@ -4,63 +4,73 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_SUGGEST_SCALE_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_SUGGEST_SCALE_H
 
-#include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/solid_scale.h>
+#include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
+#include <CGAL/Conformal_alpha_shapes_3/surface_front.h>
+#include <CGAL/Conformal_alpha_shapes_3/surface_report.h>
 
-#include <algorithm>
-#include <cstddef>
-#include <limits>
+#include <CGAL/Named_function_parameters.h>
+
 #include <stdexcept>
-#include <vector>
 
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
-namespace internal {
-
-// `suggest_scale()` from the soup grown with no bound: the `coverage`
-// quantile over its vertices of the largest value among their faces.
-inline double suggest_scale(const Advancing_front_soup& soup, double coverage)
-{
-  std::vector<double> closing(soup.shape_vertex.size(), 0.0);
-  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
-    for(std::size_t s : soup.triangles[t])
-      closing[s] = (std::max)(closing[s], soup.values[t]);
-  if(closing.empty())
-    return std::numeric_limits<double>::infinity();
-  const std::size_t k = std::min(closing.size() - 1, std::size_t(coverage * double(closing.size())));
-  std::nth_element(closing.begin(), closing.begin() + std::ptrdiff_t(k), closing.end());
-  return closing[k];
-}
-
-} // namespace internal
 
 /*!
 \ingroup PkgConformalAlphaShapes3Surface
 
-The automatic scale of `extract_surface()`: the smallest `a` at which the
-surface covers the points. The surface is first grown with no bound on the
-scale; each of its vertices then needs the largest conformal value among its
-faces for its whole umbrella to be in the complex, and the scale returned is
-the `coverage` quantile of those values over the vertices. At that scale,
-that share of the surface's vertices has its full umbrella, and the rest (a
-border that would need larger facets, gaps in the sampling) is left as a
-border rather than bridged. On samples of closed or open surfaces, clean or
-noisy (after denoising), the surface at this scale holds over 99% of the
-points (the manual gives the measurements). It fails where the sample does
-not describe a surface at all (a volume of points, scattered noise): then
-the surface grown without bound is itself poor, and so is the scale.
+The automatic scale of `extract_surface()` with the same
+`surface_extraction`: the smallest `a` at which its surface covers the
+share `coverage` of the sample.
+- `ADVANCING_FRONT`: `Surface_front::suggest_scale()`: `coverage` is the
+  share of the front's vertices whose whole umbrella of faces is in the
+  surface (default 0.99).
+- `SOLID_BOUNDARY`: `coverage` is the share of the input points on one
+  connected part of the solid's boundary (default 0.9): below the scale at
+  which the surface first closes, the walk enters the volume and what is
+  left are small closed pockets, each holding few points; at that scale the
+  share jumps to nearly all points, so the smallest scale reaching
+  `coverage` is the first closed surface. For a sample of several separate
+  objects, lower it below the share of the largest object. The scale is
+  found among the values of `cas.boundary_facet_alphas()`, by their
+  quantiles 5%, 10%, ..., 100% then a bisection to 0.1%; when no quantile
+  reaches `coverage`, the one whose surface holds the most points.
 
-\param cas a `Conformal_alpha_shape_3` of dimension 3
-\param coverage the share of vertices whose umbrella must be complete, in `(0, 1]`
-\throws std::invalid_argument when `cas` has dimension below 3 or `coverage` is outside `(0, 1]`
+The paper's convention, a fixed quantile of the facet values, is
+`cas.alpha_at_quantile(q)`.
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{surface_extraction}
+    \cgalParamDescription{the method of the surface}
+    \cgalParamType{`Surface_extraction`}
+    \cgalParamDefault{`ADVANCING_FRONT`}
+  \cgalParamNEnd
+  \cgalParamNBegin{coverage}
+    \cgalParamDescription{the share of the sample the surface must cover (see above)}
+    \cgalParamType{`double` in `(0, 1]`}
+    \cgalParamDefault{0.99 with `ADVANCING_FRONT`, 0.9 with `SOLID_BOUNDARY`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument when `cas` has dimension below 3 or
+`coverage` is outside `(0, 1]` (NaN included).
 */
-template <class ConformalAlphaShape>
-double suggest_scale(const ConformalAlphaShape& cas, double coverage = 0.99)
+template <class ConformalAlphaShape, class NamedParameters = CGAL::parameters::Default_named_parameters>
+double suggest_scale(const ConformalAlphaShape& cas, const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Surface_extraction method = choose_parameter(get_parameter(np, internal_np_cas3::surface_extraction),
+                                                     ADVANCING_FRONT);
+  const double coverage = choose_parameter(get_parameter(np, internal_np_cas3::coverage),
+                                           method == SOLID_BOUNDARY ? 0.9 : 0.99);
   if(cas.dimension() < 3)
     throw std::invalid_argument("suggest_scale: the shape has dimension below 3");
   if(!(coverage > 0 && coverage <= 1))
     throw std::invalid_argument("suggest_scale: coverage must be in (0, 1]");
-  return internal::suggest_scale(internal::advancing_front_soup(cas), coverage);
+  if(method == SOLID_BOUNDARY)
+    return internal::suggest_solid_scale(cas, coverage);
+  return Surface_front<ConformalAlphaShape>(cas).suggest_scale(coverage);
 }
 
 } // namespace Conformal_alpha_shapes_3

@@ -1,0 +1,180 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_SURFACE_FRONT_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_SURFACE_FRONT_H
+
+#include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/orient_surface_parts.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/surface_output_maps.h>
+#include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
+#include <CGAL/Conformal_alpha_shapes_3/surface_report.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+
+/*!
+\ingroup PkgConformalAlphaShapes3Surface
+
+The advancing front of a conformal alpha shape, grown once with no bound on
+the scale, from which the surface at any scale `a` is cut: the default
+method of `extract_surface()` and `suggest_scale()`, which grow it anew at
+each call; keep one `Surface_front` to extract several scales of one shape.
+
+The front grows facet by facet over the Delaunay facets, from the smallest
+conformal value, as CGAL's `Advancing_front_surface_reconstruction` grows a
+surface. (Facets between two cells of the complex are candidates too: under
+noise, the flat cells along the sampled surface enter the complex before the
+surface closes, and the facets between them are the surface.) It only grows
+where the surface stays a manifold, so a noisy layer gives one sheet, not a
+shell with an inner wall, and an open scan one sheet with a border, not a
+two-sided slab. Vertices the front cannot attach are left off every
+surface; so are pockets too small to carry curvature once they are all the
+front finds (the manual, "The Advancing Front").
+
+The shape must outlive the front and must not change while it is used.
+
+\tparam ConformalAlphaShape a `Conformal_alpha_shape_3`
+*/
+template <class ConformalAlphaShape>
+class Surface_front
+{
+public:
+  typedef ConformalAlphaShape Shape;
+
+  /// Grows the front over `cas`; an empty front when `cas` has dimension below 3.
+  explicit Surface_front(const Shape& cas) : m_shape(cas), m_soup(internal::advancing_front_soup(cas)) {}
+
+  /// the number of faces of the front (of the surface at an infinite scale)
+  std::size_t number_of_faces() const { return m_soup.triangles.size(); }
+
+  /*!
+  The automatic scale: the smallest `a` at which the surface covers the
+  points. Each vertex of the front needs the largest conformal value among
+  its faces for its whole umbrella to be in the complex; the scale returned
+  is the `coverage` quantile of those values over the vertices. At that
+  scale, that share of the surface's vertices has its full umbrella, and
+  the rest (a border that would need larger facets, gaps in the sampling) is
+  left as a border rather than bridged. On samples of closed or open
+  surfaces, clean or noisy (after denoising), the surface at this scale
+  holds over 99% of the points (the manual gives the measurements). It
+  fails where the sample does not describe a surface at all (a volume of
+  points, scattered noise): then the front itself is poor, and so is the scale.
+  Infinity for an empty front.
+
+  \throws std::invalid_argument when `coverage` is outside `(0, 1]`
+  */
+  double suggest_scale(double coverage = 0.99) const
+  {
+    if(!(coverage > 0 && coverage <= 1))
+      throw std::invalid_argument("suggest_scale: coverage must be in (0, 1]");
+    std::vector<double> closing(m_soup.shape_vertex.size(), 0.0);
+    for(std::size_t t = 0; t < m_soup.triangles.size(); ++t)
+      for(std::size_t s : m_soup.triangles[t])
+        closing[s] = (std::max)(closing[s], m_soup.values[t]);
+    if(closing.empty())
+      return std::numeric_limits<double>::infinity();
+    const std::size_t k = (std::min)(closing.size() - 1, std::size_t(coverage * double(closing.size())));
+    std::nth_element(closing.begin(), closing.begin() + std::ptrdiff_t(k), closing.end());
+    return closing[k];
+  }
+
+  /*!
+  Writes into `pmesh` the surface at scale `a`: the front less its faces
+  whose conformal value exceeds `a` (their neighbors get a border there, and
+  pieces of fewer than 8 faces left on their own are dropped), oriented as
+  `extract_surface()` says, whose named parameters (but
+  `surface_extraction`) it takes.
+  */
+  template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Surface_report extract_surface(double a, PolygonMesh& pmesh,
+                                 const NamedParameters& np = CGAL::parameters::default_values()) const
+  {
+    return surface_of_soup(internal::pruned_soup(m_soup, a), pmesh, np);
+  }
+
+private:
+  // The soup's parts joined into sheets and oriented, written into `pmesh`.
+  template <class PolygonMesh, class NamedParameters>
+  Surface_report surface_of_soup(internal::Advancing_front_soup soup, PolygonMesh& pmesh,
+                                 const NamedParameters& np) const
+  {
+    typedef typename Shape::Geom_traits::Vector_3 Vector;
+    typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+    const Shape& cas = m_shape;
+    const internal::Surface_output_maps<PolygonMesh, NamedParameters> output(pmesh, np);
+    const std::vector<Vector> no_normals;
+    const auto& reference_normals = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals);
+
+    Surface_report report;
+    report.number_of_input_points = cas.number_of_input_points();
+    report.number_of_points_off_surface = cas.number_of_input_points();
+    if(cas.dimension() < 3)
+      return report;
+
+    std::vector<typename Shape::Vertex_handle> shape_vertex(cas.number_of_vertices());
+    for(typename Shape::Vertex_handle v : cas.finite_vertex_handles())
+      shape_vertex[v->vertex_index()] = v;
+    auto point = [&](std::size_t s) { return shape_vertex[soup.shape_vertex[s]]->point(); };
+    const bool has_reference = !reference_normals.empty();
+    auto reference = [&](std::size_t s) {
+      return Vector(reference_normals[*cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin()]);
+    };
+    if(has_reference)
+      internal::cut_at_reference_folds<Vector>(soup, point, reference);
+    const internal::Soup_parts parts = internal::soup_parts(soup);
+    const internal::Soup_sheets sheets = internal::soup_sheets(soup, parts);
+    const internal::Sheet_groups groups = has_reference
+      ? internal::Sheet_groups::one_per_sheet(sheets.size())
+      : internal::join_open_sheets_across_gaps<Vector>(soup, parts, sheets, point);
+    const std::vector<char> reverse =
+      internal::parts_to_reverse<Vector>(soup, parts, sheets, groups, point, reference, has_reference);
+
+    report.number_of_parts = sheets.size();
+    for(std::size_t s = 0; s < sheets.size(); ++s)
+      report.number_of_closed_parts += sheets.closed[s] ? 1 : 0;
+    for(std::size_t p = 0; p < parts.size(); ++p)
+      report.number_of_reversed_parts += reverse[p] ? 1 : 0;
+    report.oriented_by_reference_normals = has_reference;
+
+    std::vector<vertex_descriptor> mesh_vertex(soup.shape_vertex.size());
+    for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
+      mesh_vertex[s] =
+        output.add_vertex(pmesh, point(s), *cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin());
+    report.number_of_vertices = soup.shape_vertex.size();
+
+    for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+    {
+      const std::array<std::size_t, 3>& tri = soup.triangles[t];
+      const bool flip = reverse[parts.part_of_triangle[t]] != 0;
+      const std::array<vertex_descriptor, 3> face = {mesh_vertex[tri[0]], mesh_vertex[flip ? tri[2] : tri[1]],
+                                                     mesh_vertex[flip ? tri[1] : tri[2]]};
+      if(CGAL::Euler::add_face(face, pmesh) != boost::graph_traits<PolygonMesh>::null_face())
+        ++report.number_of_faces;
+    }
+
+    std::vector<char> on(cas.number_of_vertices(), 0);
+    for(std::size_t s : soup.shape_vertex)
+      on[s] = 1;
+    report.number_of_points_off_surface = internal::number_of_points_off(cas, on);
+    return report;
+  }
+
+  const Shape& m_shape;
+  internal::Advancing_front_soup m_soup;
+};
+
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_SURFACE_FRONT_H

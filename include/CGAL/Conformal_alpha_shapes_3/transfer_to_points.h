@@ -1,0 +1,373 @@
+// Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_TRANSFER_TO_POINTS_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_TRANSFER_TO_POINTS_H
+
+#include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
+#include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_alpha_shapes_3 {
+
+/*!
+\ingroup PkgConformalAlphaShapes3Multiscale
+Where the values of an input point at one scale come from.
+*/
+enum Point_source
+{
+  /// the fit at the point's own vertex of the surface
+  SURFACE_VERTEX,
+  /// the values of the surface at its point nearest to the input point,
+  /// interpolated over the facet there: the point is not a vertex of the
+  /// surface, or its own fit is undefined
+  NEAREST_SURFACE_POINT,
+  /// none: the point is farther from the surface than
+  /// `far_from_surface()` local spacings, or the surface
+  /// near it has no defined values; every number is NaN
+  NO_VALUE
+};
+
+/*!
+\ingroup PkgConformalAlphaShapes3Multiscale
+The curvature of the surface at one input point, at one scale and
+neighborhood; every number is NaN where `source` is `NO_VALUE`.
+*/
+template <class Kernel>
+struct Point_curvature
+{
+  Point_source source = NO_VALUE;
+  /// from the (smoothed) point to the surface point whose values these are
+  /// (0 on its own vertex; NaN when the surface is empty)
+  double distance = std::numeric_limits<double>::quiet_NaN();
+  /// the radius of the neighborhood of the fit (for rings: the farthest
+  /// neighbor used); interpolated like the values
+  double radius = std::numeric_limits<double>::quiet_NaN();
+  typename Kernel::Vector_3 normal = typename Kernel::Vector_3(std::numeric_limits<double>::quiet_NaN(),
+    std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
+  typename Kernel::FT mean_curvature = std::numeric_limits<double>::quiet_NaN();
+  typename Kernel::FT gaussian_curvature = std::numeric_limits<double>::quiet_NaN();
+  /// `max_curvature` is `k1`, `max_direction` `d1`; `min_curvature` is `k2`
+  Principal_curvatures_and_directions<Kernel> principal;
+
+  /// whether the values are the point's own vertex's
+  bool on_surface() const { return source == SURFACE_VERTEX; }
+};
+
+/// \ingroup PkgConformalAlphaShapes3Multiscale
+/// How far, in local spacings, an input point may be from the surface and
+/// still take its values in `transfer_to_points()`; the local spacing of a
+/// point is the length of its vertex's third-shortest Delaunay edge.
+constexpr double far_from_surface() { return 4; }
+
+namespace internal {
+
+// Where a vertex of the shape without a value of its own meets the surface:
+// the nearest point of the surface, on `face`; `face` is null when the
+// vertex is farther than `far_from_surface()` local spacings.
+template <class Point, class Face>
+struct Surface_foot
+{
+  std::size_t shape_vertex;  // vertex index
+  Point point;
+  Face face;
+  double distance;
+};
+
+// The same curvature seen from the other side of the surface: the normal
+// and the signs of the curvatures flip, the principal directions swap roles
+// (so that d1 x d2 is still the normal).
+template <class GT>
+void take_other_side(Point_curvature<GT>& c)
+{
+  Principal_curvatures_and_directions<GT>& p = c.principal;
+  c.normal = -c.normal;
+  c.mean_curvature = -c.mean_curvature;
+  const double max_curvature = -p.min_curvature;
+  p.min_curvature = -p.max_curvature;
+  p.max_curvature = max_curvature;
+  std::swap(p.max_direction, p.min_direction);
+}
+
+// The value at the vertex of index `v` of the shape: its own surface
+// vertex's (`own_vertex`), or else interpolated at the nearest point of the
+// surface (`feet`, sorted by vertex), or none.
+template <class GT, class PolygonMesh, class VertexPointMap, class VertexIndexMap, class Foot>
+Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const PolygonMesh& pmesh,
+                                    const VertexPointMap& vpm, const VertexIndexMap& vertex_index,
+                                    const std::vector<Vertex_curvature<GT> >& values, const std::vector<Foot>& feet)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename GT::Vector_3 Vector;
+  auto record = [](Point_source source, double distance, double r, const Vector& n, double max_k, double min_k,
+                   const Vector& max_d, const Vector& min_d) {
+    Point_curvature<GT> c;
+    c.source = source;
+    c.distance = distance;
+    c.radius = r;
+    c.normal = n;
+    c.mean_curvature = (max_k + min_k) / 2;
+    c.gaussian_curvature = max_k * min_k;
+    c.principal = Principal_curvatures_and_directions<GT>{max_k, min_k, max_d, min_d};
+    return c;
+  };
+  auto vec3 = [](const Vector& x) { return Vec3(x.x(), x.y(), x.z()); };
+  auto vector = [](const Vec3& x) { return Vector(x.x(), x.y(), x.z()); };
+  Point_curvature<GT> c;  // NaN everywhere
+
+  if(own_vertex != std::size_t(-1))
+  {
+    const Vertex_curvature<GT>& e = values[own_vertex];
+    return record(SURFACE_VERTEX, 0, e.radius, e.normal, e.principal.max_curvature, e.principal.min_curvature,
+                  e.principal.max_direction, e.principal.min_direction);
+  }
+
+  const auto foot = std::lower_bound(feet.begin(), feet.end(), v,
+                                     [](const Foot& f, std::size_t x) { return f.shape_vertex < x; });
+  if(foot == feet.end() || foot->shape_vertex != v)  // the surface is empty
+    return c;
+  c.distance = foot->distance;
+  if(foot->face == typename boost::graph_traits<PolygonMesh>::face_descriptor())
+    return c;
+  // barycentric weights of the nearest point, over the corners with values
+  vertex_descriptor corner[3];
+  int i = 0;
+  for(vertex_descriptor u : vertices_around_face(halfedge(foot->face, pmesh), pmesh))
+    corner[i++] = u;
+  auto value = [&](vertex_descriptor u) -> const Vertex_curvature<GT>& { return values[get(vertex_index, u)]; };
+  double weight[3], total = 0;
+  for(int j = 0; j < 3; ++j)
+  {
+    weight[j] = value(corner[j]).is_defined()
+      ? std::sqrt(CGAL::to_double(CGAL::squared_area(foot->point, get(vpm, corner[(j + 1) % 3]),
+                                                     get(vpm, corner[(j + 2) % 3]))))
+      : 0.;
+    total += weight[j];
+  }
+  if(!(total > 0))  // a degenerate facet: its corners with values, alike
+    for(int j = 0; j < 3; ++j)
+      total += (weight[j] = value(corner[j]).is_defined() ? 1. : 0.);
+  if(!(total > 0))
+    return c;
+  Vec3 n = Vec3::Zero(), max_d = Vec3::Zero();
+  double r = 0, max_k = 0, min_k = 0;
+  int reference = -1;
+  for(int j = 0; j < 3; ++j)
+  {
+    if(!(weight[j] > 0))
+      continue;
+    const double w = weight[j] / total;
+    const Vertex_curvature<GT>& corner_value = value(corner[j]);
+    if(reference < 0)
+      reference = j;
+    n += w * vec3(corner_value.normal);
+    // a principal direction is a line: align signs before averaging
+    const Vec3 reference_d1 = vec3(value(corner[reference]).principal.max_direction);
+    const Vec3 d1 = vec3(corner_value.principal.max_direction);
+    max_d += (d1.dot(reference_d1) < 0 ? -w : w) * d1;
+    r += w * corner_value.radius;
+    max_k += w * corner_value.principal.max_curvature;
+    min_k += w * corner_value.principal.min_curvature;
+  }
+  n.normalize();
+  max_d = (max_d - max_d.dot(n) * n).normalized();
+  return record(NEAREST_SURFACE_POINT, c.distance, r, vector(n), max_k, min_k, vector(max_d), vector(n.cross(max_d)));
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgConformalAlphaShapes3Multiscale
+
+Gives every input point of the conformal alpha shape `cas` the values that
+the layers `layers` hold at the vertices of a surface `pmesh` of the shape
+(from `extract_surface()`, with values from `estimate_vertex_curvatures()`),
+writing layer `k`'s value of input point `i` at key `i` into the map that
+`point_curvatures(k)` returns, called once for each layer, in order, just
+before its values are written (so that the caller may allocate a layer's
+storage only then). A point whose vertex is a vertex of the surface with a defined
+value takes that value (`SURFACE_VERTEX`); any other point takes the values
+at its nearest point on the surface, interpolated over the facet there by
+barycentric weights over the corners with values (`NEAREST_SURFACE_POINT`,
+with the distance), unless it is farther than `far_from_surface()` local
+spacings (`NO_VALUE`, all NaN; so is every point when the surface is
+empty). Where several surface vertices stand for one vertex of the shape
+(a pinched vertex), the first with a defined value gives it. With
+`reference_normals`, a point whose reference normal points to the other
+side of the surface gets the values seen from that side: normal and mean
+and principal curvatures negated, principal directions swapped.
+
+The nearest surface points are searched once for all layers; each layer's
+vertex values are released (`layers[k]` emptied) once it is transferred, so
+that they and the points' values are not all held at once.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_if_available_tag`
+        (TBB's threads; the same results)
+\tparam PointCurvatureMaps a function object taking a layer index and
+        returning a model of `WritablePropertyMap` with `std::size_t` (an
+        input index of `cas`) as key and `Point_curvature<GT>` as value,
+        written for distinct keys from several threads with a parallel tag
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_input_index_map}
+    \cgalParamDescription{the input index of `cas` of each vertex of `pmesh` (as `extract_surface()` writes it); required}
+    \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{the positions of the vertices of `pmesh`, in the coordinates of `cas`}
+    \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `GT::Point_3` as value}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, pmesh)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_index_map}
+    \cgalParamDescription{the index of each vertex in `layers[k]`}
+    \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
+    \cgalParamDefault{an automatically indexed internal map}
+  \cgalParamNEnd
+  \cgalParamNBegin{reference_normals}
+    \cgalParamDescription{a normal per input point of `cas`, or an empty range}
+    \cgalParamType{a random access range of `GT::Vector_3`}
+    \cgalParamDefault{empty}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+*/
+template <class ConcurrencyTag = CGAL::Sequential_tag, class ConformalAlphaShape, class PolygonMesh, class GT,
+          class PointCurvatureMaps, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void transfer_to_points(const ConformalAlphaShape& cas, const PolygonMesh& pmesh,
+                        std::vector<std::vector<Vertex_curvature<GT> > >& layers,
+                        PointCurvatureMaps point_curvatures,
+                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  typedef ConformalAlphaShape Cas;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  typedef typename GT::Point_3 Point;
+  typedef internal::Surface_foot<Point, face_descriptor> Foot;
+  typedef Vertex_curvature<GT> Value;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  static_assert(!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                        internal_np_cas3::vertex_input_index_map_t>::value,
+                "transfer_to_points needs the named parameter vertex_input_index_map");
+  const auto input_index = get_parameter(np, internal_np_cas3::vertex_input_index_map);
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, pmesh));
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
+  const std::vector<typename GT::Vector_3> no_normals;
+  const auto& reference_normals = choose_parameter(
+    CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals);
+
+  // for every vertex of the shape (by vertex index), the surface vertex whose
+  // value it takes: its own first; at a pinch, the first one whose value is
+  // defined; none when none is
+  const std::size_t none = std::size_t(-1);
+  auto own_vertices = [&](const std::vector<Value>& values) {
+    std::vector<std::size_t> own(cas.number_of_vertices(), none);
+    for(vertex_descriptor v : vertices(pmesh))
+    {
+      std::size_t& o = own[cas.input_vertex(get(input_index, v))->vertex_index()];
+      if(o == none && values[get(vertex_index, v)].is_defined())
+        o = get(vertex_index, v);
+    }
+    return own;
+  };
+
+  // the feet of the shape's vertices without a value of their own in some
+  // layer, found once for all layers, so that the search tree over the
+  // surface's faces is freed before the values are written
+  std::vector<Foot> feet;
+  if(!CGAL::is_empty(pmesh))
+  {
+    std::vector<bool> needs_foot(cas.number_of_vertices(), false);
+    for(const std::vector<Value>& values : layers)
+    {
+      const std::vector<std::size_t> own = own_vertices(values);
+      for(std::size_t v = 0; v < own.size(); ++v)
+        if(own[v] == none)
+          needs_foot[v] = true;
+    }
+    std::vector<typename Cas::Vertex_handle> footless;
+    for(std::size_t i = 0; i < cas.number_of_input_points(); ++i)
+    {
+      const typename Cas::Vertex_handle v = cas.input_vertex(i);
+      if(needs_foot[v->vertex_index()])
+      {
+        needs_foot[v->vertex_index()] = false;
+        footless.push_back(v);
+      }
+    }
+    if(!footless.empty())
+    {
+      typedef CGAL::AABB_face_graph_triangle_primitive<PolygonMesh, std::remove_const_t<decltype(vpm)> > Primitive;
+      CGAL::AABB_tree<CGAL::AABB_traits<GT, Primitive> > tree;
+      tree.insert(faces(pmesh).first, faces(pmesh).second, pmesh, vpm);
+      // the search tree of the faces in their order, then the hierarchy,
+      // which sorts them: where several faces are nearest, the one found
+      // depends on that order
+      tree.accelerate_distance_queries();
+      tree.build();
+      feet.resize(footless.size());
+      internal::for_each_index<ConcurrencyTag>(footless.size(), []() { return 0; }, [&](std::size_t k, int&) {
+        const Point& p = footless[k]->point();
+        const auto nearest = tree.closest_point_and_primitive(p);
+        feet[k] = Foot{footless[k]->vertex_index(), nearest.first, nearest.second,
+                       std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)))};
+      });
+      // serially: CGAL's walks over the shape mark the vertices they visit
+      typedef internal::Local_scale_policy Policy;
+      for(std::size_t k = 0; k < feet.size(); ++k)
+        if(feet[k].distance
+           > far_from_surface() * internal::kth_shortest_edge_length<Policy::spacing_edge_rank>(cas, footless[k]))
+          feet[k].face = face_descriptor();
+      std::sort(feet.begin(), feet.end(),
+                [](const Foot& x, const Foot& y) { return x.shape_vertex < y.shape_vertex; });
+    }
+  }
+
+  // the values are written vertex by vertex of the shape, whose order the
+  // surface's follows: the reads are then in memory order, one scattered
+  // store per point
+  std::vector<typename Cas::Vertex_handle> shape_vertex(cas.number_of_vertices());  // by vertex index
+  for(const typename Cas::Vertex_handle v : cas.finite_vertex_handles())
+    shape_vertex[v->vertex_index()] = v;
+  for(std::size_t k = 0; k < layers.size(); ++k)
+  {
+    const std::vector<Value>& values = layers[k];
+    const std::vector<std::size_t> own = own_vertices(values);
+    const auto point_map = point_curvatures(k);
+    internal::for_each_index<ConcurrencyTag>(shape_vertex.size(), []() { return 0; }, [&](std::size_t v, int&) {
+      const Point_curvature<GT> value =
+        internal::value_at_vertex<GT>(v, own[v], pmesh, vpm, vertex_index, values, feet);
+      for(const std::size_t i : cas.input_indices(shape_vertex[v]))
+      {
+        Point_curvature<GT> c = value;
+        if(!reference_normals.empty() && c.normal * reference_normals[i] < 0)
+          internal::take_other_side(c);
+        put(point_map, i, c);
+      }
+    });
+    std::vector<Value>().swap(layers[k]);
+  }
+}
+
+} // namespace Conformal_alpha_shapes_3
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_TRANSFER_TO_POINTS_H
