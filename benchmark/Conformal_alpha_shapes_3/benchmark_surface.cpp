@@ -1,11 +1,11 @@
-// Time of suggest_alpha and extract_boundary_surface against the Delaunay
+// Time of suggest_scale and extract_surface with the solid boundary against the Delaunay
 // build of the same points, and the share of the points on the surface.
 //   benchmark_surface [--sizes 100000,1000000] [FILE...]
 // Without FILE: noisy ellipsoids (0.01% and 0.1% radial noise) of the given
 // sizes and the bundled bunny. FILE: any point file CGAL reads.
 #include <CGAL/Conformal_alpha_shape_3.h>
-#include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
-#include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
+#include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,9 +40,10 @@ void run(const std::string& name, const std::vector<Point>& pts)
   const Cas cas(pts.begin(), pts.end());
   const double build_seconds = build.seconds();
   cas3_benchmark::Phase search;
-  const double suggested = CAS3::suggest_alpha(cas);
+  const auto solid = CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY);
+  const double suggested = CAS3::suggest_scale(cas, solid);
   const double search_seconds = search.seconds();
-  std::printf("%s: %zu points, Delaunay %.3f s, conformal shape %.3f s (%.2fx), suggest_alpha %.3f s (%.2fx)\n",
+  std::printf("%s: %zu points, Delaunay %.3f s, conformal shape %.3f s (%.2fx), suggest_scale %.3f s (%.2fx)\n",
               name.c_str(), pts.size(), dt_seconds, build_seconds, build_seconds / dt_seconds, search_seconds,
               search_seconds / dt_seconds);
   std::printf("  %-10s %12s %10s %10s %9s %9s %8s\n", "scale", "a", "extract s", "x Delaunay", "faces",
@@ -55,7 +56,7 @@ void run(const std::string& name, const std::vector<Point>& pts)
   {
     Mesh mesh;
     cas3_benchmark::Phase extract;
-    const CAS3::Boundary_surface_report r = CAS3::extract_boundary_surface(cas, s.alpha, mesh);
+    const CAS3::Surface_report r = CAS3::extract_surface(cas, s.alpha, mesh, solid);
     const double seconds = extract.seconds();
     std::printf("  %-10s %12.5g %10.3f %10.2f %9zu %8.2f%% %8zu\n", s.label.c_str(), s.alpha, seconds,
                 seconds / dt_seconds, r.number_of_faces, 100 * r.fraction_of_points_on_surface(),

@@ -133,7 +133,7 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
   const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(normals));
   Analysis::Surface surface;
   const double alpha = scale_factor * analysis.scale_value(CAS3::Scale::automatic());
-  const int components = int(analysis.extract_surface(alpha, surface).number_of_parts);
+  const int components = int(analysis.surface(alpha, surface).number_of_parts);
   const double spacing = analysis.noise().spacing;
   // the connected pieces of the surface (faces connected across edges)
   std::vector<int> piece(points.size(), -1);
@@ -149,7 +149,8 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
   for(const std::string& item : neighborhoods)
   {
     const CAS3::Neighborhood neighborhood = neighborhood_of(item);
-    const std::vector<CAS3::Point_curvature<Kernel> > per_point = analysis.estimate_curvatures(surface, neighborhood);
+    const std::vector<CAS3::Point_curvature<Kernel> > per_point =
+      analysis.estimate_curvatures(surface, {neighborhood}).front();
     Layer layer;
     layer.label = item;
     layer.automatic = neighborhood.kind() == CAS3::Neighborhood::AUTOMATIC;

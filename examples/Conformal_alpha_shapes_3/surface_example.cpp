@@ -3,9 +3,9 @@
 // then the solid boundary (the earlier extraction) at its own.
 //   surface_example [points.xyz]   (default: the bundled bunny)
 #include <CGAL/Conformal_alpha_shape_3.h>
-#include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
 #include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
-#include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
+#include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -54,8 +54,8 @@ int main(int argc, char* argv[])
 
   // the closed boundary of the solid that the facets enclose
   Mesh solid;
-  const double alpha = CAS3::suggest_alpha(cas);
-  const CAS3::Boundary_surface_report solid_report = CAS3::extract_boundary_surface(cas, alpha, solid);
+  const double alpha = CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
+  const CAS3::Surface_report solid_report = CAS3::extract_surface(cas, alpha, solid, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
   std::cout << "solid boundary, a = " << alpha << ": " << solid_report.number_of_faces << " faces, "
             << 100 * solid_report.fraction_of_points_on_surface() << "% of the points on it, "
             << solid_report.number_of_pinched_vertices << " pinched vertices\n";

@@ -14,8 +14,12 @@
 
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/cell_values.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/critical_values.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/flood_fill.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/input_index_table.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/poles.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
@@ -23,10 +27,6 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL/determinant.h>
-#include <CGAL/Hilbert_sort_3.h>
-#include <CGAL/Iterator_range.h>
-#include <CGAL/Multiscale_sort.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
@@ -160,7 +160,7 @@ public:
   typedef typename std::vector<FT>::const_iterator Alpha_iterator;
 
   /// Range of the indices of the input points a vertex stands for.
-  typedef Iterator_range<const size_type*> Input_index_range;
+  typedef Conformal_alpha_shapes_3::internal::Input_index_table::Range Input_index_range;
 
   /// \name Creation
   /// @{
@@ -178,9 +178,10 @@ public:
   Conformal_alpha_shape_3& operator=(Conformal_alpha_shape_3&&) = delete;
 
   /// The largest coordinate magnitude and bounding-box extent accepted.
-  static constexpr double max_coordinate_magnitude() { return 1e75; }
+  static constexpr double max_coordinate_magnitude()
+  { return Conformal_alpha_shapes_3::internal::max_coordinate_magnitude; }
   /// The smallest bounding-box extent (along the longest axis) accepted.
-  static constexpr double min_extent() { return 1e-75; }
+  static constexpr double min_extent() { return Conformal_alpha_shapes_3::internal::min_coordinate_extent; }
 
   /// The shape of the points in `[first, last)`, as
   /// `make_conformal_alpha_shape(first, last, np)` builds it.
@@ -243,10 +244,10 @@ public:
     insert_points(first, last);
     // the passes below run over the cells by index: listed once
     const std::vector<Cell_handle> cells = index_cells();
-    std::vector<Point> centers = store_cell_values(cells);
-    if(!centers.empty() && this->number_of_vertices() == 0)
+    std::vector<Point> centers;
+    if(!CAS3::internal::store_cell_values(*this, cells, centers))
     {
-      // store_cell_values() found a construction out of double's range
+      clear();
       throw std::invalid_argument("Conformal_alpha_shape_3: a circumcenter or circumradius of the Delaunay "
                                   "tetrahedra overflows or underflows in double, or divides by a "
                                   "determinant that is 0 in double (tetrahedra or triangles flat to "
@@ -278,7 +279,6 @@ public:
   {
     Dt::clear();
     m_input_vertices.clear();
-    m_input_offsets.clear();
     m_input_indices.clear();
     m_spectrum.clear();
     m_spectrum_ready = false;
@@ -301,9 +301,7 @@ public:
   Input_index_range input_indices(Vertex_handle v) const
   {
     CGAL_precondition(!this->is_infinite(v));
-    const size_type* base = m_input_indices.data();
-    return Input_index_range(base + m_input_offsets[v->vertex_index()],
-                             base + m_input_offsets[v->vertex_index() + 1]);
+    return m_input_indices.of_vertex(v->vertex_index());
   }
   /// @}
 
@@ -349,7 +347,9 @@ public:
 
   FT conformal_alpha(const Edge& e) const { return conformal_alpha(e.first, e.second, e.third); }
   FT conformal_alpha(Cell_handle c, int i, int j) const
-  { return this->is_infinite(c, i, j) ? infinity() : edge_status(c, i, j).own; }
+  {
+    return this->is_infinite(c, i, j) ? infinity() : Conformal_alpha_shapes_3::internal::edge_status(*this, c, i, j).own;
+  }
 
   /// The ordinary alpha value (a radius) of a finite cell, facet or edge.
   FT ordinary_alpha(Cell_handle c) const { return c->alpha(); }
@@ -372,7 +372,10 @@ public:
     return std::isnan(radius) ? infinity() : radius;
   }
   FT ordinary_alpha(const Edge& e) const
-  { return edge_ordinary_alpha(e.first, e.first->vertex(e.second), e.first->vertex(e.third)); }
+  {
+    return Conformal_alpha_shapes_3::internal::edge_ordinary_alpha(*this, e.first, e.first->vertex(e.second),
+                                                                   e.first->vertex(e.third));
+  }
   /// @}
 
   /// \name Classification
@@ -401,7 +404,7 @@ public:
   {
     if(this->is_infinite(c, i))
       return EXTERIOR;
-    return classify(facet_status(c, i), alpha);
+    return classify(Conformal_alpha_shapes_3::internal::facet_status(*this, c, i), alpha);
   }
 
   Classification_type classify(const Edge& e) const { return classify(e, m_alpha); }
@@ -413,7 +416,7 @@ public:
   {
     if(this->is_infinite(c, i, j))
       return EXTERIOR;
-    return classify(edge_status(c, i, j), alpha);
+    return classify(Conformal_alpha_shapes_3::internal::edge_status(*this, c, i, j), alpha);
   }
 
   Classification_type classify(Vertex_handle v) const { return classify(v, m_alpha); }
@@ -421,7 +424,7 @@ public:
   {
     if(this->is_infinite(v))
       return EXTERIOR;
-    return classify(vertex_status(v), alpha);
+    return classify(Conformal_alpha_shapes_3::internal::vertex_status(*this, v), alpha);
   }
   /// @}
 
@@ -459,7 +462,8 @@ public:
   {
     for(const Facet& f : this->finite_facets())
     {
-      const Critical_values s = facet_status(f.first, f.second);
+      const Conformal_alpha_shapes_3::internal::Critical_values<FT> s =
+        Conformal_alpha_shapes_3::internal::facet_status(*this, f.first, f.second);
       if(s.own < s.max || s.on_hull)
         *out++ = s.own;
     }
@@ -613,15 +617,6 @@ private:
 
   typedef Conformal_alpha_shapes_3::internal::Pole<Cell_handle> Pole;
 
-  // The three values at which a simplex changes class, as in Alpha_shape_3:
-  // it enters the complex at `own`, gets a coface in it at `mid`, and all its
-  // cells are in it at `max` (never, when it lies on the convex hull).
-  struct Critical_values
-  {
-    FT own, mid, max;
-    bool on_hull;
-  };
-
   static FT infinity() { return std::numeric_limits<FT>::infinity(); }
 
   static void check_alpha(const FT& alpha)
@@ -665,7 +660,7 @@ private:
     }
   }
 
-  Classification_type classify(const Critical_values& s, const FT& alpha) const
+  Classification_type classify(const Conformal_alpha_shapes_3::internal::Critical_values<FT>& s, const FT& alpha) const
   {
     if(!s.on_hull && alpha >= s.max) return INTERIOR;
     if(alpha >= s.mid)               return REGULAR;
@@ -682,88 +677,6 @@ private:
   {
     return (std::min)({c->vertex((i + 1) & 3)->local_scale(), c->vertex((i + 2) & 3)->local_scale(),
                        c->vertex((i + 3) & 3)->local_scale()});
-  }
-
-  Critical_values facet_status(Cell_handle c, int i) const
-  {
-    const Cell_handle n = c->neighbor(i);
-    const FT a = conformal_alpha(c), b = conformal_alpha(n);
-    return Critical_values{conformal_alpha(c, i), (std::min)(a, b), (std::max)(a, b),
-                           this->is_infinite(c) || this->is_infinite(n)};
-  }
-
-  // An edge is Gabriel when no vertex of an incident cell lies strictly
-  // inside its diametral ball; otherwise it is attached to its smallest
-  // incident facet.
-  FT edge_ordinary_alpha(Cell_handle c, Vertex_handle p, Vertex_handle q) const
-  {
-    typename Gt::Side_of_bounded_sphere_3 side = this->geom_traits().side_of_bounded_sphere_3_object();
-    bool gabriel = true;
-    FT smallest_facet = infinity();
-    typename Dt::Cell_circulator cc = this->incident_cells(c, c->index(p), c->index(q)), done = cc;
-    do
-    {
-      const int i = cc->index(p), j = cc->index(q);
-      for(int k = 0; k < 4; ++k)
-      {
-        if(k == i || k == j)
-          continue;
-        const Vertex_handle s = cc->vertex(k);
-        if(this->is_infinite(s))
-          continue;
-        if(gabriel && side(p->point(), q->point(), s->point()) == ON_BOUNDED_SIDE)
-          gabriel = false;
-        // the facet opposite to the other vertex holds p, q and s
-        smallest_facet = (std::min)(smallest_facet, ordinary_alpha(Cell_handle(cc), 6 - i - j - k));
-      }
-    } while(++cc != done);
-    if(gabriel)
-      return std::sqrt(this->geom_traits().compute_squared_radius_3_object()(p->point(), q->point()));
-    return smallest_facet;
-  }
-
-  Critical_values edge_status(Cell_handle c, int i, int j) const
-  {
-    const Vertex_handle p = c->vertex(i), q = c->vertex(j);
-    Critical_values s{edge_ordinary_alpha(c, p, q) / (std::min)(p->local_scale(), q->local_scale()),
-                      infinity(), FT(0), false};
-    typename Dt::Cell_circulator cc = this->incident_cells(c, i, j), done = cc;
-    do
-    {
-      if(this->is_infinite(cc))
-      {
-        s.on_hull = true;
-      }
-      else
-      {
-        s.max = (std::max)(s.max, conformal_alpha(Cell_handle(cc)));
-        for(int k = 0; k < 4; ++k)
-          if(cc->vertex(k) != p && cc->vertex(k) != q)
-            s.mid = (std::min)(s.mid, conformal_alpha(Cell_handle(cc), k));
-      }
-    } while(++cc != done);
-    return s;
-  }
-
-  Critical_values vertex_status(Vertex_handle v) const
-  {
-    Critical_values s{FT(0), infinity(), FT(0), false};
-    std::vector<Cell_handle> cells;
-    this->incident_cells(v, std::back_inserter(cells));
-    for(Cell_handle c : cells)
-    {
-      if(this->is_infinite(c))
-      {
-        s.on_hull = true;
-        continue;
-      }
-      s.max = (std::max)(s.max, conformal_alpha(c));
-    }
-    std::vector<Edge> edges;
-    this->finite_incident_edges(v, std::back_inserter(edges));
-    for(const Edge& e : edges)
-      s.mid = (std::min)(s.mid, conformal_alpha(e));
-    return s;
   }
 
   const std::vector<FT>& spectrum() const
@@ -786,62 +699,26 @@ private:
     return m_spectrum;
   }
 
-  // Inserts the points in spatial order, remembering which vertex stands for
-  // which input point.
+  // Inserts the points in an order that depends on the points alone,
+  // remembering which vertex stands for which input point.
   template <class InputIterator>
   void insert_points(InputIterator first, InputIterator last)
   {
+    namespace CAS3 = Conformal_alpha_shapes_3;
     clear();
     std::vector<Point> points(first, last);
-    double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
-    for(size_type i = 0; i < points.size(); ++i)
-      for(int d = 0; d < 3; ++d)
-      {
-        const double x = CGAL::to_double(points[i][d]);
-        if(!std::isfinite(x))
-          throw std::invalid_argument("Conformal_alpha_shape_3: input point " + std::to_string(i)
-                                      + " has a coordinate that is NaN or infinite");
-        if(std::abs(x) > max_coordinate_magnitude())
-          throw std::invalid_argument("Conformal_alpha_shape_3: input point " + std::to_string(i)
-                                      + " has a coordinate of magnitude above 1e75, out of the range in "
-                                        "which circumcenters can be computed in double; normalize the "
-                                        "coordinates or remove the outlier");
-        low[d] = (i == 0) ? x : (std::min)(low[d], x);
-        high[d] = (i == 0) ? x : (std::max)(high[d], x);
-      }
-    const double extent = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
-    if(!points.empty() && extent > max_coordinate_magnitude())
-      throw std::invalid_argument("Conformal_alpha_shape_3: the bounding box of the input is longer than "
-                                  "1e75, out of the range in which circumcenters can be computed in double");
-    if(extent > 0 && extent < min_extent())
-      throw std::invalid_argument("Conformal_alpha_shape_3: the bounding box of the input is shorter than "
-                                  "1e-75, out of the range in which circumcenters can be computed in double; "
-                                  "rescale the coordinates");
-
-    // spatial_sort() without its shuffle, in its 3D settings (Hilbert
-    // leaves of 8 points, rounds of an eighth): a shuffle by the
-    // coordinates alone stands for it, so that the insertion order, and
-    // with it the numbering of the vertices and cells, is the same for any
-    // order of the input. The points are sorted with their indices beside
-    // them: sorting indices that point into the array was twice as slow
-    // (every comparison a random read).
-    typedef std::pair<Point, size_type> Point_and_index;
-    std::vector<Point_and_index> order;
-    order.reserve(points.size());
-    for(size_type i : Conformal_alpha_shapes_3::internal::order_free_permutation(points))
-      order.emplace_back(points[i], i);
+    CAS3::internal::check_coordinates(points, "Conformal_alpha_shape_3: ", true);
+    const std::vector<std::pair<Point, size_type> > order =
+      CAS3::internal::order_free_insertion_order<Gt>(points);
     std::vector<Point>().swap(points);
-    typedef Spatial_sort_traits_adapter_3<Gt, First_of_pair_property_map<Point_and_index> > Sort_traits;
-    typedef Hilbert_sort_3<Sort_traits, Hilbert_sort_median_policy> Hilbert_sort;
-    Multiscale_sort<Hilbert_sort>(Hilbert_sort(Sort_traits(), 8), 64, 0.125)(order.begin(), order.end());
 
     m_input_vertices.assign(order.size(), Vertex_handle());
     // the vertex index of each input point, kept beside its handle: the
-    // rows below read them in input order, and reading them through the
+    // table below reads them in input order, and reading them through the
     // handles was a cache miss each
     std::vector<size_type> vertex_index_of_input(order.size());
     Vertex_handle hint;
-    for(const Point_and_index& p : order)
+    for(const std::pair<Point, size_type>& p : order)
     {
       const size_type before = this->number_of_vertices();
       hint = Dt::insert(p.first, hint);
@@ -860,16 +737,7 @@ private:
       clear();
       throw std::invalid_argument(why);
     }
-
-    // input indices of each vertex, as compressed rows
-    m_input_offsets.assign(this->number_of_vertices() + 1, 0);
-    for(size_type v : vertex_index_of_input)
-      ++m_input_offsets[v + 1];
-    std::partial_sum(m_input_offsets.begin(), m_input_offsets.end(), m_input_offsets.begin());
-    m_input_indices.resize(m_input_vertices.size());
-    std::vector<size_type> fill(m_input_offsets.begin(), m_input_offsets.end() - 1);
-    for(size_type i = 0; i < vertex_index_of_input.size(); ++i)
-      m_input_indices[fill[vertex_index_of_input[i]]++] = i;
+    m_input_indices.assign(vertex_index_of_input, this->number_of_vertices());
   }
 
   // Every cell, its index set to its place in the list.
@@ -885,109 +753,9 @@ private:
     return cells;
   }
 
-  // One pass over the cells (by index) stores each cell's radius and which
-  // of its facets its vertices encroach, and returns the circumcenters
-  // (indexed by cell index) for the poles. The vertex opposite to a facet
-  // lies strictly inside the facet's smallest circumscribing ball exactly
-  // when the cell's circumcenter lies strictly beyond the facet's plane: the
-  // centers of the balls through the facet's circle lie on one line, and
-  // the opposite vertex's power changes sign with the center's side. This
-  // is a filtered orientation test, much cheaper than
-  // Side_of_bounded_sphere_3.
-  // When a circumcenter or radius is not finite (or the radius is 0), the
-  // later predicates would run on NaN or infinity: the shape is cleared, for
-  // the caller to throw.
-  std::vector<Point> store_cell_values(const std::vector<Cell_handle>& cells)
-  {
-    const Gt& gt = this->geom_traits();
-    typename Gt::Construct_circumcenter_3 circumcenter = gt.construct_circumcenter_3_object();
-    typename Gt::Compute_squared_distance_3 squared_distance = gt.compute_squared_distance_3_object();
-    typename Gt::Orientation_3 orientation = gt.orientation_3_object();
-
-    // each cell's values are its own: computed on TBB's threads when
-    // available, with the same results
-    std::vector<Point> centers(cells.size());
-    std::atomic<bool> undefined(false);
-    Conformal_alpha_shapes_3::internal::for_each_index<Parallel_if_available_tag>(
-      cells.size(), []() { return 0; }, [&](std::size_t index, int) {
-        const Cell_handle c = cells[index];
-        if(this->is_infinite(c))
-        {
-          c->set_alpha(infinity());
-          for(int i = 0; i < 4; ++i)
-            c->set_encroaches_facet(i, false);
-          return;
-        }
-        if(!constructions_are_defined(c))
-        {
-          undefined = true;
-          return;
-        }
-        const Point& center = centers[index] =
-          circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
-                       c->vertex(2)->point(), c->vertex(3)->point());
-        const double radius = std::sqrt(squared_distance(center, c->vertex(0)->point()));
-        if(!(std::isfinite(center.x()) && std::isfinite(center.y()) && std::isfinite(center.z())
-             && std::isfinite(radius) && radius > 0))
-        {
-          undefined = true;
-          return;
-        }
-        c->set_alpha(radius);
-        for(int i = 0; i < 4; ++i)
-        {
-          // (v[i+1], v[i+2], v[i+3], v[i]) is a cyclic shift of a positive cell
-          const Orientation vertex_side = (i % 2 == 0) ? NEGATIVE : POSITIVE;
-          const Orientation center_side = orientation(c->vertex((i + 1) & 3)->point(),
-                                                      c->vertex((i + 2) & 3)->point(),
-                                                      c->vertex((i + 3) & 3)->point(), center);
-          c->set_encroaches_facet(i, center_side == -vertex_side);
-        }
-      });
-    if(undefined)
-      clear();
-    return centers;
-  }
-
-  // The kernel's circumcenter of a cell and squared radius of a facet divide
-  // by a determinant of coordinate differences, computed in double. A
-  // tetrahedron or triangle flat to rounding (which the exact predicates may
-  // still see as non-degenerate, e.g. at wildly different scales) makes it 0:
-  // the construction is then undefined (NaN, or an assertion in debug
-  // builds). The same determinants, computed the same way, tell beforehand:
-  // the circumcenter of (p, q, r, s) divides by det(q - p, r - p, s - p), the
-  // squared radius of the facet (a, b, c) by det(a - c, b - c, (a - c) x (b - c)),
-  // with the facet opposite to vertex i taken as (i + 1, i + 2, i + 3) as in
-  // ordinary_alpha().
-  bool constructions_are_defined(Cell_handle c) const
-  {
-    auto usable = [](double d) { return d != 0 && std::isfinite(d); };
-    const Point& p = c->vertex(0)->point();
-    const Point& q = c->vertex(1)->point();
-    const Point& r = c->vertex(2)->point();
-    const Point& s = c->vertex(3)->point();
-    if(!usable(CGAL::determinant(q.x() - p.x(), q.y() - p.y(), q.z() - p.z(),
-                                 r.x() - p.x(), r.y() - p.y(), r.z() - p.z(),
-                                 s.x() - p.x(), s.y() - p.y(), s.z() - p.z())))
-      return false;
-    for(int i = 0; i < 4; ++i)
-    {
-      const Point& a = c->vertex((i + 1) & 3)->point();
-      const Point& b = c->vertex((i + 2) & 3)->point();
-      const Point& o = c->vertex((i + 3) & 3)->point();
-      const double ax = a.x() - o.x(), ay = a.y() - o.y(), az = a.z() - o.z();
-      const double bx = b.x() - o.x(), by = b.y() - o.y(), bz = b.z() - o.z();
-      const double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
-      if(!usable(CGAL::determinant(ax, ay, az, bx, by, bz, nx, ny, nz)))
-        return false;
-    }
-    return true;
-  }
-
   FT m_alpha;
   std::vector<Vertex_handle> m_input_vertices;  // input index -> vertex
-  std::vector<size_type> m_input_offsets;       // vertex index -> rows of m_input_indices
-  std::vector<size_type> m_input_indices;
+  Conformal_alpha_shapes_3::internal::Input_index_table m_input_indices;
   mutable std::vector<FT> m_spectrum;
   mutable bool m_spectrum_ready = false;
 };

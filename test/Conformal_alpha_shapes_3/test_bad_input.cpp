@@ -98,9 +98,9 @@ Answer pipeline(const std::vector<Point>& p)
 {
   CAS3::Multiscale_curvatures<K> analysis(p.begin(), p.end());
   CAS3::Multiscale_curvatures<K>::Surface surface;
-  const CAS3::Surface_report report = analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+  const CAS3::Surface_report report = analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
   BOOST_TEST(report.number_of_input_points == p.size());
-  const auto c = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
+  const auto c = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
   BOOST_REQUIRE(c.size() == p.size());
   Answer a{std::vector<bool>(p.size()), std::vector<double>(p.size()), analysis.outliers()};
   for(std::size_t i = 0; i < c.size(); ++i)

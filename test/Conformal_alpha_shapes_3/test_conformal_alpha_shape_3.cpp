@@ -4,8 +4,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shape_3.h>
-#include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
-#include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
+#include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 
 #include <CGAL/Alpha_shape_3.h>
 #include <CGAL/Alpha_shape_cell_base_3.h>
@@ -378,7 +378,7 @@ BOOST_AUTO_TEST_CASE(scales_and_quantiles_outside_their_range_throw)
   }
   BOOST_TEST(cas.get_alpha() == 0.0);
   for(double f : {-0.5, 1.5, nan})
-    BOOST_CHECK_THROW(CAS3::suggest_alpha(cas, CAS3::parameters::minimum_fraction_on_surface(f)),
+    BOOST_CHECK_THROW(CAS3::suggest_scale(cas, CAS3::parameters::coverage(f, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY))),
                       std::invalid_argument);
   const Cas empty;
   BOOST_CHECK_THROW(empty.alpha_at_quantile(0.5), std::invalid_argument);
@@ -416,10 +416,10 @@ BOOST_AUTO_TEST_CASE(regression_fuzz_solid_labeling_id_of_out_of_range)
 
   typedef CGAL::Surface_mesh<Point> Mesh;
   const double infinity = std::numeric_limits<double>::infinity();
-  for(double alpha : {CAS3::suggest_alpha(cas), cas.alpha_at_quantile(0.5), infinity})
+  for(double alpha : {CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), cas.alpha_at_quantile(0.5), infinity})
   {
     Mesh mesh;
-    const CAS3::Boundary_surface_report report = CAS3::extract_boundary_surface(cas, alpha, mesh);
+    const CAS3::Surface_report report = CAS3::extract_surface(cas, alpha, mesh, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
     BOOST_TEST(report.number_of_faces == num_faces(mesh));
     BOOST_TEST(CGAL::is_closed(mesh));
     BOOST_TEST(mesh.is_valid(false));

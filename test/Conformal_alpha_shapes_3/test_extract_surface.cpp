@@ -9,9 +9,9 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shape_3.h>
-#include <CGAL/Conformal_alpha_shapes_3/extract_boundary_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
-#include <CGAL/Conformal_alpha_shapes_3/suggest_alpha.h>
+#include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -58,7 +58,7 @@ namespace {
 // What a test checks of an extracted surface.
 struct Surface_facts
 {
-  CAS3::Boundary_surface_report report;
+  CAS3::Surface_report report;
   std::size_t components = 0;
   long euler = 0;
   double volume = 0;
@@ -71,7 +71,7 @@ Surface_facts extract(const Cas& cas, double alpha, const std::vector<Point>& pt
   Mesh mesh;
   auto input_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
   Surface_facts facts;
-  facts.report = CAS3::extract_boundary_surface(cas, alpha, mesh, CAS3::parameters::vertex_input_index_map(input_index));
+  facts.report = CAS3::extract_surface(cas, alpha, mesh, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY).vertex_input_index_map(input_index));
   BOOST_TEST(facts.report.number_of_faces == num_faces(mesh));
   BOOST_TEST(facts.report.number_of_vertices == num_vertices(mesh));
   // every mesh vertex is its input point
@@ -135,7 +135,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mes
   for(const Case& k : cases)
   {
     const Cas cas(k.pts.begin(), k.pts.end());
-    const Surface_facts s = extract<Mesh>(cas, CAS3::suggest_alpha(cas), k.pts);
+    const Surface_facts s = extract<Mesh>(cas, CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), k.pts);
     BOOST_TEST_INFO(k.name);
     BOOST_TEST(s.valid_closed_triangle_mesh);
     BOOST_TEST(s.components == 1u);
@@ -148,7 +148,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mes
   // a torus whose density follows a 7x range of feature size (see below)
   const auto pts = cas3_test::lfs_torus_sample<Point>(closed_points, 1.0, 0.8);
   const Cas cas(pts.begin(), pts.end());
-  const Surface_facts s = extract<Mesh>(cas, CAS3::suggest_alpha(cas), pts);
+  const Surface_facts s = extract<Mesh>(cas, CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), pts);
   BOOST_TEST(s.valid_closed_triangle_mesh);
   BOOST_TEST(s.components == 1u);
   BOOST_TEST(s.euler == 0);
@@ -165,7 +165,7 @@ BOOST_AUTO_TEST_CASE(noisy_samples_stay_manifold)
     {
       const auto pts = cas3_test::ellipsoid_sample<Point>(noisy_points, 1.0, 0.7, 0.4, noise);
       const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_scale_estimator(estimator));
-      const Surface_facts s = extract<Surface_mesh>(cas, CAS3::suggest_alpha(cas), pts);
+      const Surface_facts s = extract<Surface_mesh>(cas, CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), pts);
       BOOST_TEST_MESSAGE("noise " << noise << " estimator " << int(estimator) << ": "
                          << s.report.fraction_of_points_on_surface() << " of the points on the surface");
       BOOST_TEST_INFO("noise " << noise << " estimator " << int(estimator));
@@ -221,7 +221,7 @@ BOOST_AUTO_TEST_CASE(conformal_scales_succeed_where_every_global_alpha_fails)
 {
   const auto pts = cas3_test::lfs_torus_sample<Point>(20000, 1.0, 0.9);
   const Cas conformal(pts.begin(), pts.end());
-  const Surface_facts s = extract<Surface_mesh>(conformal, CAS3::suggest_alpha(conformal), pts);
+  const Surface_facts s = extract<Surface_mesh>(conformal, CAS3::suggest_scale(conformal, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), pts);
   BOOST_TEST(s.valid_closed_triangle_mesh);
   BOOST_TEST(s.components == 1u);
   BOOST_TEST(s.euler == 0);
@@ -245,7 +245,7 @@ BOOST_AUTO_TEST_CASE(conformal_scales_succeed_where_every_global_alpha_fails)
   {
     const double alpha = values[k * (values.size() - 1) / (sweep - 1)];
     Surface_mesh mesh;
-    const auto report = CAS3::extract_boundary_surface(global, alpha, mesh);
+    const auto report = CAS3::extract_surface(global, alpha, mesh, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
     if(report.fraction_of_points_on_surface() < 0.9)
       continue;
     ++closed_surfaces;
@@ -271,7 +271,7 @@ BOOST_AUTO_TEST_CASE(real_scans)
   {
     const auto pts = read(std::string(CAS3_SHARED_DATA) + k.file);
     const Cas cas(pts.begin(), pts.end());
-    const Surface_facts s = extract<Polyhedron>(cas, CAS3::suggest_alpha(cas), pts);
+    const Surface_facts s = extract<Polyhedron>(cas, CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), pts);
     BOOST_TEST_MESSAGE(k.file << ": " << s.report.fraction_of_points_on_surface() << " of the points on the surface, "
                        << s.components << " components");
     BOOST_TEST_INFO(k.file);
@@ -307,13 +307,13 @@ BOOST_AUTO_TEST_CASE(degenerate_scales_and_shapes)
   const Cas cas(pts.begin(), pts.end());
   // below every facet value: nothing, and every point off the surface
   Surface_mesh mesh;
-  auto report = CAS3::extract_boundary_surface(cas, 0.0, mesh);
+  auto report = CAS3::extract_surface(cas, 0.0, mesh, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
   BOOST_TEST(report.empty());
   BOOST_TEST(num_faces(mesh) == 0u);
   BOOST_TEST(report.number_of_points_off_surface == pts.size());
   BOOST_TEST(report.fraction_of_points_on_surface() == 0.0);
   // above every value: the convex hull
-  report = CAS3::extract_boundary_surface(cas, 1e300, mesh);
+  report = CAS3::extract_surface(cas, 1e300, mesh, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
   BOOST_TEST(report.number_of_faces == 2 * pts.size() - 4);
   BOOST_TEST(report.number_of_points_off_surface == 0u);
   BOOST_TEST(CGAL::is_closed(mesh));
@@ -323,13 +323,14 @@ BOOST_AUTO_TEST_CASE(degenerate_scales_and_shapes)
   const std::vector<Point> flat = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0)};
   BOOST_CHECK_THROW(empty.make_conformal_alpha_shape(flat.begin(), flat.end()), std::invalid_argument);
   Surface_mesh none;
-  BOOST_TEST(CAS3::extract_boundary_surface(empty, 1.0, none).empty());
-  BOOST_CHECK_THROW(CAS3::suggest_alpha(empty), std::invalid_argument);
+  BOOST_TEST(CAS3::extract_surface(empty, 1.0, none, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)).empty());
+  BOOST_CHECK_THROW(CAS3::suggest_scale(empty, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), std::invalid_argument);
   // a single tetrahedron
   const std::vector<Point> tet = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
   const Cas one(tet.begin(), tet.end());
   Surface_mesh four;
-  report = CAS3::extract_boundary_surface(one, CAS3::suggest_alpha(one), four);
+  const auto solid = CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY);
+  report = CAS3::extract_surface(one, CAS3::suggest_scale(one, solid), four, solid);
   BOOST_TEST(report.number_of_faces == 4u);
   BOOST_TEST(PMP::volume(four) == 1.0 / 6.0, boost::test_tools::tolerance(1e-12));
 }
@@ -381,10 +382,10 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
   const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(given_normals));
   Analysis::Surface surface;
   Sheet_facts facts;
-  facts.report = analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+  facts.report = analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
   BOOST_TEST(CGAL::is_valid_polygon_mesh(surface));
   BOOST_TEST(facts.report.number_of_faces == surface.number_of_faces());
-  const auto curvatures = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(1));
+  const auto curvatures = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(1)}).front();
   std::size_t covered = 0;
   for(std::size_t i = 0; i < points.size(); ++i)
     covered += curvatures[i].on_surface() ? 1 : 0;
@@ -766,8 +767,8 @@ BOOST_AUTO_TEST_CASE(each_point_follows_its_given_normal)
   }
   const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(given));
   Analysis::Surface surface;
-  analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
-  const auto values = analysis.estimate_curvatures(surface, CAS3::Neighborhood::spacings(4));
+  analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+  const auto values = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::spacings(4)}).front();
   auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
   auto normal = surface.property_map<Analysis::Surface_vertex, Vector>("v:normal").first;
   std::size_t outward_sheet = 0;
@@ -858,7 +859,7 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
   const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(4000, 1, 1, 1);
   const Analysis analysis(pts.begin(), pts.end());
   Analysis::Surface surface;
-  analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+  analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
   // remove the cap z > 0.8 from the surface
   std::vector<Analysis::Surface::Face_index> cap;
   for(auto f : surface.faces())
@@ -872,14 +873,15 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
     CGAL::Euler::remove_face(surface.halfedge(f), surface);
   surface.collect_garbage();
 
-  const std::vector<CAS3::Point_curvature<K> > c = analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
+  const std::vector<CAS3::Point_curvature<K> > c =
+    analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
 #ifdef CGAL_LINKED_WITH_TBB
   {
     // on one thread, the same bits: the points on their own vertex are
     // filled in parallel, the others serially
     tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     const std::vector<CAS3::Point_curvature<K> > serial =
-      analysis.estimate_curvatures(surface, CAS3::Neighborhood::rings(2));
+      analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
     std::size_t differing = 0;
     for(std::size_t i = 0; i < c.size(); ++i)
       differing += same_bits(c[i], serial[i]) ? 0 : 1;
@@ -943,9 +945,9 @@ BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
   auto mean_curvatures = [](const std::vector<Point>& p, const CAS3::Neighborhood& n) {
     const Analysis analysis(p.begin(), p.end());
     Analysis::Surface surface;
-    analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+    analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
     std::vector<double> H;
-    for(const auto& c : analysis.estimate_curvatures(surface, n))
+    for(const auto& c : analysis.estimate_curvatures(surface, {n}).front())
       H.push_back(c.mean_curvature);
     return H;
   };
@@ -998,9 +1000,9 @@ BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
     const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(5000, 1, 1, 1, noise * spacing, 3);
     const Analysis analysis(pts.begin(), pts.end(), CAS3::parameters::denoising(CAS3::NEVER_DENOISE));
     Analysis::Surface surface;
-    analysis.extract_surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+    analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
     std::vector<double> r;
-    for(const auto& c : analysis.estimate_curvatures(surface, CAS3::Neighborhood::automatic()))
+    for(const auto& c : analysis.estimate_curvatures(surface, {CAS3::Neighborhood::automatic()}).front())
       if(std::isfinite(c.radius))
         r.push_back(c.radius / spacing);
     BOOST_TEST(r.size() > 4950u);
@@ -1035,8 +1037,8 @@ BOOST_AUTO_TEST_CASE(any_order_of_the_points_gives_the_same_results)
   const double a = analysis.scale_value(CAS3::Scale::automatic());
   BOOST_TEST(a == analysis_shuffled.scale_value(CAS3::Scale::automatic()));
   Analysis::Surface surface, surface_shuffled;
-  analysis.extract_surface(a, surface);
-  analysis_shuffled.extract_surface(a, surface_shuffled);
+  analysis.surface(a, surface);
+  analysis_shuffled.surface(a, surface_shuffled);
   BOOST_TEST(surface.number_of_faces() == surface_shuffled.number_of_faces());
   const auto layers = analysis.estimate_curvatures(surface, neighborhoods);
   const auto layers_shuffled = analysis_shuffled.estimate_curvatures(surface_shuffled, neighborhoods);

@@ -150,7 +150,7 @@ private:
     std::vector<vertex_descriptor> mesh_vertex(soup.shape_vertex.size());
     for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
       mesh_vertex[s] =
-        output.add_vertex(pmesh, point(s), *cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin());
+        output.new_vertex(pmesh, point(s), *cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin());
     report.number_of_vertices = soup.shape_vertex.size();
 
     for(std::size_t t = 0; t < soup.triangles.size(); ++t)

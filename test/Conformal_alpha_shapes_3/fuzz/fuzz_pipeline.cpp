@@ -50,11 +50,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for(const CAS3::Scale& scale : {CAS3::Scale::automatic(), CAS3::Scale::quantile(0.5)})
     {
       CAS3::Multiscale_curvatures<K>::Surface surface;
-      analysis.extract_surface(analysis.scale_value(scale), surface);
+      analysis.surface(analysis.scale_value(scale), surface);
       for(const CAS3::Neighborhood& neighborhood : {CAS3::Neighborhood::rings(1), CAS3::Neighborhood::rings(2),
                                                     CAS3::Neighborhood::spacings(4), CAS3::Neighborhood::automatic()})
       {
-        const auto curvatures = analysis.estimate_curvatures(surface, neighborhood);
+        const auto curvatures = analysis.estimate_curvatures(surface, {neighborhood}).front();
         if(curvatures.size() != points.size())
           std::abort();
       }

@@ -61,6 +61,46 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
+// The range of coordinates in which the circumcenters of the shape can be
+// computed in double: magnitudes and bounding-box extents up to 1e75,
+// extents (along the longest axis) down to 1e-75.
+constexpr double max_coordinate_magnitude = 1e75;
+constexpr double min_coordinate_extent = 1e-75;
+
+// Throws std::invalid_argument, its message starting with `who`, at the
+// first point with a NaN or infinite coordinate, naming its index; with
+// `in_double_range`, also at the first coordinate beyond
+// `max_coordinate_magnitude`, then when the bounding box is out of range.
+template <class Point>
+void check_coordinates(const std::vector<Point>& points, const std::string& who, bool in_double_range)
+{
+  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int d = 0; d < 3; ++d)
+    {
+      const double x = CGAL::to_double(points[i][d]);
+      if(!std::isfinite(x))
+        throw std::invalid_argument(who + "input point " + std::to_string(i)
+                                    + " has a coordinate that is NaN or infinite");
+      if(in_double_range && std::abs(x) > max_coordinate_magnitude)
+        throw std::invalid_argument(who + "input point " + std::to_string(i)
+                                    + " has a coordinate of magnitude above 1e75, out of the range in which "
+                                      "circumcenters can be computed in double; normalize the coordinates or "
+                                      "remove the outlier");
+      low[d] = (i == 0) ? x : (std::min)(low[d], x);
+      high[d] = (i == 0) ? x : (std::max)(high[d], x);
+    }
+  const double extent = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]});
+  if(!in_double_range)
+    return;
+  if(!points.empty() && extent > max_coordinate_magnitude)
+    throw std::invalid_argument(who + "the bounding box of the input is longer than 1e75, out of the range in "
+                                      "which circumcenters can be computed in double");
+  if(extent > 0 && extent < min_coordinate_extent)
+    throw std::invalid_argument(who + "the bounding box of the input is shorter than 1e-75, out of the range in "
+                                      "which circumcenters can be computed in double; rescale the coordinates");
+}
+
 // The parameters of the outlier rule (see above).
 struct Input_hygiene_options
 {
@@ -169,10 +209,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
   Normalized_input<Kernel> result;
   const std::vector<Point> p(input.begin(), input.end());
   const std::size_t n = p.size();
-  for(std::size_t i = 0; i < n; ++i)
-    for(int d = 0; d < 3; ++d)
-      if(!std::isfinite(CGAL::to_double(p[i][d])))
-        throw std::invalid_argument("input point " + std::to_string(i) + " has a coordinate that is NaN or infinite");
+  check_coordinates(p, "", false);
 
   std::vector<std::size_t> all(n);
   for(std::size_t i = 0; i < n; ++i)

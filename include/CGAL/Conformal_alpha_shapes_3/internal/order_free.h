@@ -13,6 +13,11 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <CGAL/Hilbert_sort_3.h>
+#include <CGAL/Multiscale_sort.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -124,6 +129,27 @@ std::vector<std::size_t> order_free_permutation(const std::vector<Point>& points
     if(last - end[b] > 1)
       std::sort(order.begin() + std::ptrdiff_t(end[b]), order.begin() + std::ptrdiff_t(last), less);
   }
+  return order;
+}
+
+// The points with their indices in the order in which they are inserted
+// into a triangulation: `spatial_sort()` in its 3D settings (Hilbert leaves
+// of 8 points, rounds of an eighth) with its random shuffle replaced by
+// `order_free_permutation()`, so that the insertion order, and with it the
+// numbering of the vertices and cells, is the same for any order of the
+// input. The points are sorted with their indices beside them (sorting
+// indices that point into the array makes every comparison a random read).
+template <class Gt, class Point>
+std::vector<std::pair<Point, std::size_t> > order_free_insertion_order(const std::vector<Point>& points)
+{
+  typedef std::pair<Point, std::size_t> Point_and_index;
+  std::vector<Point_and_index> order;
+  order.reserve(points.size());
+  for(std::size_t i : order_free_permutation(points))
+    order.emplace_back(points[i], i);
+  typedef Spatial_sort_traits_adapter_3<Gt, First_of_pair_property_map<Point_and_index> > Sort_traits;
+  typedef Hilbert_sort_3<Sort_traits, Hilbert_sort_median_policy> Hilbert_sort;
+  Multiscale_sort<Hilbert_sort>(Hilbert_sort(Sort_traits(), 8), 64, 0.125)(order.begin(), order.end());
   return order;
 }
 

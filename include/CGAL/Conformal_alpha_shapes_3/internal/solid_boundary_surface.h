@@ -61,7 +61,7 @@ Surface_report extract_solid_boundary(const ConformalAlphaShape& cas, double a, 
     vertex_descriptor& mv = mesh_vertex[first_umbrella[v->vertex_index()] + std::size_t(umbrella)];
     if(mv == null_vertex)
     {
-      mv = output.add_vertex(pmesh, v->point(), *cas.input_indices(v).begin());
+      mv = output.new_vertex(pmesh, v->point(), *cas.input_indices(v).begin());
       ++report.number_of_vertices;
       report.number_of_pinched_vertices += umbrella == 1 ? 1 : 0;
     }

@@ -32,9 +32,9 @@ public:
 
   // A new vertex of `pmesh` at `p`, standing for the input point `input_index`.
   template <class Point>
-  vertex_descriptor add_vertex(PolygonMesh& pmesh, const Point& p, std::size_t input_index) const
+  vertex_descriptor new_vertex(PolygonMesh& pmesh, const Point& p, std::size_t input_index) const
   {
-    const vertex_descriptor v = CGAL::add_vertex(pmesh);
+    const vertex_descriptor v = add_vertex(pmesh);
     put(m_points, v, Mesh_point(p.x(), p.y(), p.z()));
     put(m_input_index, v, input_index);
     return v;
