@@ -4,13 +4,14 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPE_3_H
 #define CGAL_CONFORMAL_ALPHA_SHAPE_3_H
 
-// Why this header is over 400 lines: it holds one class, whose members
-// (construction and range checks, values, classification, spectrum,
-// filtration) all read the values it stores in the triangulation's vertices
-// and cells, and half of it is the class's reference documentation. The
-// computations that stand alone are in internal/: poles (poles.h), the
-// local-scale policy and sample spacing (sample_spacing.h), the flood fill
-// (flood_fill.h).
+// Over 500 lines: one class with the API of Alpha_shape_3 (classification
+// of four kinds of simplex, with and without a scale, the spectrum, the
+// filtration, an output function per kind), all reading the values stored in
+// the triangulation's vertices and cells, and its reference documentation (a
+// quarter of the lines). What stands alone is in internal/: the input checks
+// (input_hygiene.h), the insertion order (order_free.h), the input-index
+// table, the cell values, the critical values of classification, the poles
+// and the local-scale policy (sample_spacing.h).
 
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
@@ -121,8 +122,7 @@ circumradius is not a finite positive `double`, or on which the determinant
 that the kernel divides by to construct a circumcenter or a facet radius is
 0 in `double` (a tetrahedron or triangle flat to rounding, far smaller than
 the bounding box, say: exact predicates accept it, inexact constructions
-cannot handle it). Such inputs crashed or gave empty surfaces
-before. Normalize such data first: the pipeline (see the manual, section on
+cannot handle it). Normalize such data first: the pipeline (see the manual, section on
 input rules) recenters and rescales the points, and flags isolated far
 outliers, before building this class.
 

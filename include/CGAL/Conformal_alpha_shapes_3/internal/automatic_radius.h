@@ -26,15 +26,12 @@ constexpr std::size_t noise_measuring_radii = 4;
 // ... and by how much that noise is raised: the pipeline smooths noisy
 // points (`denoise()`, jets of 24 to 64 neighbors) before the surface is
 // built, which hides most of the noise from the residuals but not from the
-// curvature at radii larger than the jets (measured: about 7 times).
+// curvature at radii larger than the jets (the manual, "Neighborhoods").
 constexpr double residual_noise_factor = 7;
 // The bias of the fits grows as r^2: the quadric's correction for the
 // fourth order (`quadric_fit()`) leaves the part due to the curvature's
-// variation, whose leading term is its second derivatives times r^2
-// (measured, the automatic choice's median H error on the ellipsoid and
-// torus at 100k points with noise 0.1 spacing, with r^2 / r^3 / r^4:
-// 1.51 / 1.50 / 1.56% and 0.75 / 0.70 / 0.75%; at 20k, 2.58 / 2.74 / 3.21%
-// and 1.46 / 1.45 / 1.83%).
+// variation, whose leading term is its second derivatives times r^2 (the
+// manual compares r^2, r^3 and r^4).
 constexpr double bias_growth_power = 2;
 // A fit whose residuals exceed this many times the noise is not a height
 // polynomial any more at its radius (the neighborhood wraps around a thin
@@ -90,14 +87,9 @@ inline double residual_noise(const std::vector<Candidate_fit>& fits)
 // H(r) = H0 + c r^2, c fitted to the fits' mean curvatures by least squares
 // weighted by their inverse squared standard errors, and c^2 taken less
 // its variance (a c that is noise alone must not read as bias: that would
-// keep small, noisy radii). The radius kept minimizes c^2 r^4 + se(r)^2.
-// Measured on the ellipsoid and torus at 100k points with noise 0.1
-// spacing (evaluate_surfaces): median H error 1.51% and 0.75% (CGAL jet
-// fitting at its best k: 2.23% and 2.40%); the intersection of confidence
-// intervals, used before on plain quadric fits, chose per vertex among
-// noisy fits: 3.86% and 3.88%; quartic fits with a bias in r^4, tried
-// too: 1.49% and 1.53%, at twice the cost. `fits` holds the defined fits, by
-// increasing radius; at least one.
+// keep small, noisy radii). The radius kept minimizes c^2 r^4 + se(r)^2
+// (the manual, "Neighborhoods", measures it against the alternatives).
+// `fits` holds the defined fits, by increasing radius; at least one.
 inline const Candidate_fit& choose_by_least_squared_error(const std::vector<Candidate_fit>& fits,
                                                           double sample_noise = 0)
 {

@@ -112,9 +112,8 @@ struct Radius_fit
 // `fit_at_centers()` runs those fits, before the vertices are estimated.
 // A sixth: the interpolation is exact for curvature that varies linearly,
 // and its error on curvature that varies at the fit's own scale falls with
-// the square of the centers' spacing (at a quarter, a bumpy sphere's H
-// at a radius of 13 edges moved by 2% of H); 10.5 edge lengths, so that
-// centers are at least 1.75 edges apart, a fifth of the vertices.
+// the square of the centers' spacing (the manual, "Neighborhoods"); 10.5
+// edge lengths, so that centers are at least 1.75 edges apart.
 constexpr double large_radius_in_edges = 10.5;
 constexpr double large_radius_per_center_spacing = 6;
 

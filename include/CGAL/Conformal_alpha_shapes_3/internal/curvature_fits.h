@@ -175,7 +175,7 @@ struct Quadric_fit_error
 // added two at a time in one packet operation. The pairs are built in
 // registers from the point: a compiler left to vectorize the products of
 // a row of scalars stored them and read them back as pairs, which stalls
-// on every neighbor (this was three times slower).
+// on every neighbor.
 struct Shell_moments
 {
   static constexpr int size = 7;
@@ -362,8 +362,7 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
   // The heights less the fourth-order term of a surface whose shape
   // operator is the fitted S everywhere, (x' S x)(x' S^2 x) / 8: exact on
   // spheres (k^3 r^4 / 8) and cylinders, where a quadric alone reads the
-  // curvature too high by a relative (k R)^2 term (measured: a unit sphere
-  // at a radius of 16 spacings, 3.2% -> 0.24%). One step: the term is
+  // curvature too high by a relative (k R)^2 term. One step: the term is
   // second order in what it corrects.
   const double b = least_squares(1);
   const double p[3] = {2 * least_squares(0), 2 * b, 2 * least_squares(2)};  // x' S x = p0 x^2 + p1 x y + p2 y^2

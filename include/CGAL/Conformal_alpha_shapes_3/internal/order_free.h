@@ -96,7 +96,7 @@ std::vector<std::size_t> order_free_sample(const std::vector<Point>& points, std
 // points in that order, the same sequence of points for any order of the
 // input. The keys' leading bits place each point in one of about
 // `points.size() / 2` buckets, so that only the few points in a bucket are
-// compared (a comparison sort of the keys was 4 times slower).
+// compared, in linear time.
 template <class Point>
 std::vector<std::size_t> order_free_permutation(const std::vector<Point>& points)
 {

@@ -209,10 +209,8 @@ private:
   // Marks the neighbors of u as reached by the current search and puts
   // those it had not reached before in m_reached[0, returned count). Every
   // neighbor is stamped and written, and the count advanced by whether it
-  // is new: a branch on that, taken for about one edge in six and
-  // unpredictably, cost a fifth of the ball search (1.8 s against 2.3 s for
-  // the five smallest default radii at every vertex of 300,000 noisy
-  // points, one thread). Stamps of 32 bits keep the array small (it is read
+  // is new: a branch on that is taken unpredictably, and mispredicted
+  // branches dominated the ball search. Stamps of 32 bits keep the array small (it is read
   // for every edge the search walks), and are cleared when the counter
   // wraps.
   std::size_t mark_neighbors(const Vertex_graph& g, std::size_t u)
