@@ -71,7 +71,8 @@ Surface_facts extract(const Cas& cas, double alpha, const std::vector<Point>& pt
   Mesh mesh;
   auto input_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
   Surface_facts facts;
-  facts.report = CAS3::extract_surface(cas, alpha, mesh, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY).vertex_input_index_map(input_index));
+  facts.report = CAS3::extract_surface(cas, alpha, mesh, CAS3::parameters::surface_extraction(
+    CAS3::SOLID_BOUNDARY, CAS3::parameters::vertex_input_index_map(input_index)));
   BOOST_TEST(facts.report.number_of_faces == num_faces(mesh));
   BOOST_TEST(facts.report.number_of_vertices == num_vertices(mesh));
   // every mesh vertex is its input point
@@ -947,7 +948,8 @@ BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
     Analysis::Surface surface;
     analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
     std::vector<double> H;
-    for(const auto& c : analysis.estimate_curvatures(surface, {n}).front())
+    const auto layers = analysis.estimate_curvatures(surface, {n});
+    for(const auto& c : layers.front())
       H.push_back(c.mean_curvature);
     return H;
   };
@@ -1002,7 +1004,8 @@ BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
     Analysis::Surface surface;
     analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
     std::vector<double> r;
-    for(const auto& c : analysis.estimate_curvatures(surface, {CAS3::Neighborhood::automatic()}).front())
+    const auto layers = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::automatic()});
+    for(const auto& c : layers.front())
       if(std::isfinite(c.radius))
         r.push_back(c.radius / spacing);
     BOOST_TEST(r.size() > 4950u);
