@@ -67,6 +67,7 @@
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
 #include "cas3_curvature_output.h"
+#include "cas3_layer_names.h"
 #include "cas3_malloc_policy.h"
 #include "cas3_read_point_cloud.h"
 
@@ -460,12 +461,13 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
   for(std::size_t r = 0; r < neighborhoods.size(); ++r)
   {
     const CAS3::Neighborhood& neighborhood = neighborhoods[r];
-    m.stage("program: layer " + neighborhood.label() + " (values in float, summary)", "stage", [&] {
+    const std::string label = cas3::neighborhood_label(neighborhood);
+    m.stage("program: layer " + label + " (values in float, summary)", "stage", [&] {
       cas3::Layer layer(curvatures[r]);
-      layer.label = neighborhood.label();
-      layer.description = "a = " + number(a) + " (auto), " + neighborhood.label();
+      layer.label = label;
+      layer.description = "a = " + number(a) + " (auto), " + label;
       layers.push_back(std::move(layer));
-      return cas3::summary_row(neighborhood.label(), a, curvatures[r]);
+      return cas3::summary_row(label, a, curvatures[r]);
     });
   }
   m.stage("write surface PLY (binary, 5 layers, colors)", "stage", [&] {

@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "cas3_curvature_output.h"
+#include "cas3_layer_names.h"
 #include "cas3_malloc_policy.h"
 #include "cas3_read_point_cloud.h"
 
@@ -140,7 +141,7 @@ Options parse(int argc, char* argv[])
       o.scales.clear();
       for(const std::string& item : split_list(value()))
       {
-        try { o.scales.push_back(CAS3::Scale::from_string(item)); }
+        try { o.scales.push_back(cas3::parse_scale(item)); }
         catch(const std::invalid_argument& e) { throw Failure(std::string("--alpha: ") + e.what()); }
         if(o.scales.back().kind() != CAS3::Scale::AUTOMATIC && !(o.scales.back().value() > 0))
           throw Failure("--alpha: a scale must be above 0 (a value > 0 or a quantile in (0%, 100%]): '" + item + "'");
@@ -155,7 +156,7 @@ Options parse(int argc, char* argv[])
       {
         if(arg == "--radius")
         {
-          try { o.neighborhoods.push_back(CAS3::Neighborhood::radius_from_string(item)); }
+          try { o.neighborhoods.push_back(cas3::parse_radius(item)); }
           catch(const std::invalid_argument& e) { throw Failure(std::string("--radius: ") + e.what()); }
           continue;
         }
@@ -235,6 +236,7 @@ void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double
 {
   const std::string rings =
     neighborhood.kind() == CAS3::Neighborhood::RINGS ? std::to_string(int(neighborhood.value())) : "0";
+  const std::string label = cas3::neighborhood_label(neighborhood);
   std::string line;
   for(std::size_t i = 0; i < points.size(); ++i)
   {
@@ -256,7 +258,7 @@ void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double
       append(line, x);
     }
     line += outlier[i] ? ",1," : ",0,";
-    line += neighborhood.label() + ',';
+    line += label + ',';
     append(line, c.radius);
     line += ',' + std::to_string(int(c.source)) + ',';
     append(line, c.distance);
@@ -403,15 +405,6 @@ private:
   bool m_committed = false;
 };
 
-std::string file_label(const CAS3::Scale& s)
-{
-  std::string label = s.label();
-  if(!label.empty() && label.back() == '%')
-    label = label.substr(0, label.size() - 1) + "pct";
-  std::replace(label.begin(), label.end(), '.', 'p');  // usable in a property name
-  return label;
-}
-
 int run(const Options& o)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -478,8 +471,8 @@ int run(const Options& o)
     const double a = analysis->scale_value(scale);
     Analysis::Surface surface;
     const CAS3::Surface_report report = analysis->extract_surface(a, surface);
-    progress("scale " + scale.label() + ": surface of " + std::to_string(report.number_of_faces) + " faces");
-    summary << "scale " << scale.label() << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
+    progress("scale " + cas3::scale_text(scale) + ": surface of " + std::to_string(report.number_of_faces) + " faces");
+    summary << "scale " << cas3::scale_text(scale) << ": " << report.number_of_parts << " parts (" << report.number_of_closed_parts
             << " closed, " << report.number_of_open_parts() << " open), "
             << report.number_of_points_off_surface << " points off the surface\n";
     cas3::return_freed_memory();
@@ -490,9 +483,9 @@ int run(const Options& o)
       const CAS3::Neighborhood& neighborhood = o.neighborhoods[r];
       const std::vector<CAS3::Point_curvature<K> >& curvatures = by_neighborhood[r];
       cas3::Layer layer(curvatures);
-      layer.label = (o.scales.size() > 1 ? file_label(scale) + "_" : std::string()) + neighborhood.label();
+      layer.label = cas3::layer_label(scale, neighborhood, o.scales.size() > 1);
       std::ostringstream description;
-      description << "a = " << a << " (" << scale.label() << "), ";
+      description << "a = " << a << " (" << cas3::scale_text(scale) << "), ";
       if(neighborhood.kind() == CAS3::Neighborhood::RINGS)
         description << int(neighborhood.value()) << "-ring";
       else if(neighborhood.kind() == CAS3::Neighborhood::AUTOMATIC)
@@ -530,10 +523,10 @@ int run(const Options& o)
       std::snprintf(line, sizeof line,
                     "scale %s: the sheets agree with the input normals at %.1f%% of their vertices; "
                     "each point's values are on its own normal's side\n",
-                    scale.label().c_str(), compared == 0 ? 0.0 : 100.0 * double(agree) / double(compared));
+                    cas3::scale_text(scale).c_str(), compared == 0 ? 0.0 : 100.0 * double(agree) / double(compared));
       summary << line;
     }
-    std::ofstream ply = output.open("surface_" + file_label(scale) + ".ply", true);
+    std::ofstream ply = output.open("surface_" + cas3::scale_label(scale) + ".ply", true);
     cas3::write_surface(ply, surface, points, layers.data() + (layers.size() - o.neighborhoods.size()),
                         layers.data() + layers.size());
     ply.close();

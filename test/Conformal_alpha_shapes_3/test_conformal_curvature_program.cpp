@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
+#include "cas3_layer_names.h"
 #include "cas3_malloc_policy.h"
 #include "cas3_test_shapes.h"
 
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -572,6 +574,31 @@ BOOST_AUTO_TEST_CASE(runs_are_deterministic)
 
 // The program asks for huge pages only where the kernel gives them on
 // request, and never against a choice in GLIBC_TUNABLES.
+// The names of the options' items and of the layers, which other front ends
+// share: each reads back as the value it names.
+BOOST_AUTO_TEST_CASE(layer_names)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  const CAS3::Scale quantile = cas3::parse_scale("25%");
+  BOOST_TEST(quantile.kind() == CAS3::Scale::QUANTILE);
+  BOOST_TEST(quantile.value() == 0.25);
+  BOOST_TEST(cas3::scale_text(quantile) == "25%");
+  BOOST_TEST(cas3::scale_label(quantile) == "25pct");
+  BOOST_TEST(cas3::scale_label(cas3::parse_scale("0.35")) == "0p35");
+  BOOST_TEST(cas3::scale_label(cas3::parse_scale("auto")) == "auto");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("4s")) == "r4s");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("0.01")) == "r0p01");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("1e-7")) == "r1em07");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("auto")) == "rauto");
+  BOOST_TEST(cas3::neighborhood_label(CAS3::Neighborhood::rings(2)) == "k2");
+  BOOST_TEST(cas3::layer_label(quantile, CAS3::Neighborhood::rings(2), true) == "25pct_k2");
+  BOOST_TEST(cas3::layer_label(quantile, CAS3::Neighborhood::spacings(4), false) == "r4s");
+  for(const char* bad : {"150%", "-1", "nan", "big", "", "25%%"})
+    BOOST_CHECK_THROW(cas3::parse_scale(bad), std::invalid_argument);
+  for(const char* bad : {"0", "-2s", "inf", "4ss", "s", ""})
+    BOOST_CHECK_THROW(cas3::parse_radius(bad), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(huge_pages_are_asked_for_on_request_only)
 {
   const std::string madvise = "always [madvise] never";
