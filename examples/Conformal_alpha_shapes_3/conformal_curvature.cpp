@@ -449,7 +449,7 @@ int run(const Options& o)
   const CAS3::Denoising_plan& smoothing = analysis->denoising();
   std::snprintf(noise, sizeof noise, "noise: %.3g x spacing (spacing %.4g)%s; ", analysis->noise().noise,
                 analysis->noise().spacing,
-                analysis->noise().noise_24 > 1.3 * analysis->noise().noise ? ", mostly unresolved detail" : "");
+                analysis->noise().shows_unresolved_detail() ? ", mostly unresolved detail" : "");
   const std::string smoothing_text = smoothing.passes == 0 ? std::string("no smoothing\n")
     : "smoothed by " + std::to_string(smoothing.passes) + " jet pass(es) over "
         + std::to_string(smoothing.neighbors) + " neighbors before building the shape\n";
