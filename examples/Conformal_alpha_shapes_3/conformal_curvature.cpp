@@ -532,10 +532,6 @@ int run(const Options& o)
     ply.close();
     if(!ply)
       throw Failure("cannot write into the output directory " + o.output);
-    // test hook: a crash (an abort, as a failed assertion) after the first
-    // file, to check the clean-up
-    if(std::getenv("CONFORMAL_CURVATURE_TEST_CRASH") != nullptr)
-      std::raise(SIGABRT);
   }
   std::ofstream cloud_ply = output.open("curvatures.ply", true);
   cas3::write_point_cloud(cloud_ply, points, is_outlier, layers);
