@@ -210,8 +210,8 @@ void write_point_cloud(std::ostream& out, const std::vector<Point>& points, cons
 // input point (the library's surface lies at the smoothed positions) with
 // its input index, the float values of the scale's layers [first, last) and
 // the color of the first layer's H, then the triangles. Written straight
-// from the layers: copying the surface and adding a property map per value
-// took twice the memory of the values and more time than the write.
+// from the layers: a copy of the surface with a property map per value
+// would hold every value twice.
 template <class Surface, class Point>
 void write_surface(std::ostream& out, const Surface& surface, const std::vector<Point>& points,
                    const Layer* first, const Layer* last)
@@ -247,8 +247,8 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
   out << header.str();
   output_detail::Row_writer rows(out);
   // the rows are read by input index, out of memory order: each vertex asks
-  // for the rows of the one 16 places later, `lead` (at 10,000,000 points
-  // the file took 33 s to write, the point cloud's, read in order, 5 s)
+  // for the rows of the one 16 places later, `lead`, so that they are in
+  // the caches when their turn comes
   const auto written = surface.vertices();
   auto lead = written.begin();
   for(int ahead = 0; ahead < 16 && lead != written.end(); ++ahead)
