@@ -30,7 +30,8 @@
 //              estimate_curvatures (the fits and the nearest-surface
 //              filling) and the program's layer with its summary statistics,
 //              the surface PLY with the layers, and the binary PLY point
-//              cloud, through the program's writer (cas3_curvature_output.h;
+//              cloud, through the program's code (cas3_curvature_output.h,
+//              cas3_curvature_summary.h, cas3_layer_names.h;
 //              reading an input file is not timed). The curvature of all
 //              neighborhoods is one stage: one search per vertex serves them all.
 //   program    (--program PATH) the conformal_curvature binary on the
@@ -67,6 +68,8 @@
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
 #include "cas3_curvature_output.h"
+#include "cas3_curvature_summary.h"
+#include "cas3_layer_names.h"
 #include "cas3_malloc_policy.h"
 #include "cas3_read_point_cloud.h"
 
@@ -332,11 +335,6 @@ std::vector<Record> in_child(const std::string& kind, double time_limit, const s
 }
 
 // ---------------------------------------------------------------------------
-// From conformal_curvature.cpp, copied with the fewest changes: the layer
-// conversion, the summary statistics, the surface with the layers, the
-// binary PLY point cloud.
-
-// ---------------------------------------------------------------------------
 // The measured things
 
 struct Input
@@ -442,7 +440,7 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
   });
   Analysis::Surface surface;
   m.stage("extract_surface", "stage", [&] {
-    const CAS3::Surface_report report = analysis->extract_surface(a, surface);
+    const CAS3::Surface_report report = analysis->surface(a, surface);
     return std::to_string(report.number_of_faces) + " faces, " + std::to_string(report.number_of_parts)
            + " parts, " + std::to_string(report.number_of_points_off_surface) + " points off";
   });
@@ -460,12 +458,13 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
   for(std::size_t r = 0; r < neighborhoods.size(); ++r)
   {
     const CAS3::Neighborhood& neighborhood = neighborhoods[r];
-    m.stage("program: layer " + neighborhood.label() + " (values in float, summary)", "stage", [&] {
+    const std::string label = cas3::layer_label(scale, neighborhood, false);
+    m.stage("program: layer " + label + " (values in float, summary)", "stage", [&] {
       cas3::Layer layer(curvatures[r]);
-      layer.label = neighborhood.label();
-      layer.description = "a = " + number(a) + " (auto), " + neighborhood.label();
+      layer.label = label;
+      layer.description = cas3::layer_description(*analysis, a, scale, neighborhood, label);
       layers.push_back(std::move(layer));
-      return cas3::summary_row(neighborhood.label(), a, curvatures[r]);
+      return cas3::summary_row(label, a, curvatures[r]);
     });
   }
   m.stage("write surface PLY (binary, 5 layers, colors)", "stage", [&] {

@@ -67,6 +67,7 @@
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
+#include "cas3_layer_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,7 +119,7 @@ CAS3::Neighborhood neighborhood_of(const std::string& item)
       throw std::invalid_argument("bad ring size '" + item + "'");
     return CAS3::Neighborhood::rings(k);
   }
-  return CAS3::Neighborhood::radius_from_string(item);
+  return cas3::parse_radius(item);
 }
 
 // The automatic scale (times `scale_factor`), curvature with each

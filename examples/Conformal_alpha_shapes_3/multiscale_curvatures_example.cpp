@@ -6,6 +6,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/read_points.h>
 
+#include "cas3_layer_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -45,8 +47,8 @@ int main(int argc, char* argv[])
         H.push_back(p.mean_curvature);
     }
     std::nth_element(H.begin(), H.begin() + std::ptrdiff_t(H.size() / 2), H.end());
-    std::printf("%-6s %-14s %-11.4g %10zu %14zu %9zu %9.4g\n", layer.scale.label().c_str(),
-                layer.neighborhood.label().c_str(), layer.a, count[CAS3::SURFACE_VERTEX],
+    std::printf("%-6s %-14s %-11.4g %10zu %14zu %9zu %9.4g\n", cas3::scale_text(layer.scale).c_str(),
+                cas3::neighborhood_label(layer.neighborhood).c_str(), layer.a, count[CAS3::SURFACE_VERTEX],
                 count[CAS3::NEAREST_SURFACE_POINT], count[CAS3::NO_VALUE], H.empty() ? 0.0 : H[H.size() / 2]);
   }
   return EXIT_SUCCESS;

@@ -4,8 +4,6 @@
 //   surface_example [points.xyz]   (default: the bundled bunny)
 #include <CGAL/Conformal_alpha_shape_3.h>
 #include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
-#include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
-#include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -54,9 +52,10 @@ int main(int argc, char* argv[])
 
   // the closed boundary of the solid that the facets enclose
   Mesh solid;
-  const double alpha = CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
-  const CAS3::Surface_report solid_report = CAS3::extract_surface(cas, alpha, solid, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY));
-  std::cout << "solid boundary, a = " << alpha << ": " << solid_report.number_of_faces << " faces, "
+  const auto solid_boundary = CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY);
+  const double solid_a = CAS3::suggest_scale(cas, solid_boundary);
+  const CAS3::Surface_report solid_report = CAS3::extract_surface(cas, solid_a, solid, solid_boundary);
+  std::cout << "solid boundary, a = " << solid_a << ": " << solid_report.number_of_faces << " faces, "
             << 100 * solid_report.fraction_of_points_on_surface() << "% of the points on it, "
             << solid_report.number_of_pinched_vertices << " pinched vertices\n";
   return EXIT_SUCCESS;

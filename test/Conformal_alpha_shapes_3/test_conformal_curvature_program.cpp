@@ -10,20 +10,29 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 
+#include "cas3_layer_names.h"
 #include "cas3_malloc_policy.h"
 #include "cas3_test_shapes.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <vector>
 
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
@@ -342,31 +351,108 @@ BOOST_AUTO_TEST_CASE(bad_input_fails_with_one_line_and_no_output)
   BOOST_TEST(left == std::vector<std::string>{"keep.txt"}, boost::test_tools::per_element());
 }
 
-// A crash (here an abort raised by a test hook after the first file was
-// written) leaves the output folder as it was, and no temporary directory.
+namespace {
+
+// Whether a file stands in a directory of `dir`: the program has begun to
+// write its output into its temporary directory there.
+bool holds_a_temporary_file(const fs::path& dir)
+{
+  std::error_code error;
+  for(fs::directory_iterator d(dir, error), end; !error && d != end; d.increment(error))
+  {
+    std::error_code vanished;
+    if(fs::directory_iterator(d->path(), vanished) != end)
+      return true;
+  }
+  return false;
+}
+
+// Runs the program with `args` from the work directory, its temporary
+// directory in `temporary` (TMPDIR), and sends it `sig` as soon as it has
+// begun to write a file there, as a crash or an interrupt would come in the
+// middle of a run. Returns the wait status.
+int run_and_signal(const std::vector<std::string>& args, const fs::path& temporary, int sig)
+{
+  fs::remove_all(temporary);
+  fs::create_directories(temporary);
+  std::vector<std::string> words = {CAS3_PROGRAM};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for(std::string& word : words)
+    argv.push_back(&word[0]);
+  argv.push_back(nullptr);
+  std::string tmpdir = "TMPDIR=" + temporary.string();
+  std::vector<char*> envp;
+  for(char** e = environ; *e != nullptr; ++e)
+    if(std::string(*e).rfind("TMPDIR=", 0) != 0)
+      envp.push_back(*e);
+  envp.push_back(&tmpdir[0]);
+  envp.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if(pid == 0)
+  {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    if(::chdir(work.c_str()) == 0)
+      ::execve(argv[0], argv.data(), envp.data());
+    ::_exit(127);
+  }
+  BOOST_REQUIRE(pid > 0);
+  int status = 0;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(10);
+  while(::waitpid(pid, &status, WNOHANG) == 0)
+  {
+    const bool started = holds_a_temporary_file(temporary);
+    if(started || std::chrono::steady_clock::now() > give_up)
+    {
+      ::kill(pid, started ? sig : SIGKILL);
+      ::waitpid(pid, &status, 0);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return status;
+}
+
+} // namespace
+
+// A crash (an abort, as a failed assertion raises) or an interrupt in the
+// middle of a run leaves the output folder as it was, and no temporary
+// directory. The job is long (five scales, the CSV first) so that the
+// signal comes before its end.
 BOOST_AUTO_TEST_CASE(a_crash_leaves_the_output_folder_as_it_was)
 {
-  auto temporaries = [] {
-    std::size_t n = 0;
-    for(const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
-      n += entry.path().filename().string().rfind("conformal_curvature_", 0) == 0 ? 1 : 0;
-    return n;
-  };
-  const std::size_t before = temporaries();
   fs::remove_all(work / "crash_kept");
   fs::create_directories(work / "crash_kept");
   std::ofstream(work / "crash_kept" / "keep.txt") << "mine\n";
   fs::remove_all(work / "crash_new");
-  const Run kept = run("--alpha 50% --rings 1 --output crash_kept --quiet", "CONFORMAL_CURVATURE_TEST_CRASH=1");
-  const Run fresh = run("--alpha 50% --rings 1 --output crash_new/out --quiet", "CONFORMAL_CURVATURE_TEST_CRASH=1");
-  BOOST_TEST(kept.exit_code != 0);
-  BOOST_TEST(fresh.exit_code != 0);
-  std::vector<std::string> left;
-  for(const auto& entry : fs::directory_iterator(work / "crash_kept"))
-    left.push_back(entry.path().filename().string());
-  BOOST_TEST(left == std::vector<std::string>{"keep.txt"}, boost::test_tools::per_element());
-  BOOST_TEST(!fs::exists(work / "crash_new" / "out"));
-  BOOST_TEST(temporaries() == before);
+  const std::vector<std::string> job = {"--alpha", "10%,25%,35%,50%,auto", "--csv", "--quiet", "--output"};
+  auto with_output = [&](const std::string& dir) {
+    std::vector<std::string> args = job;
+    args.push_back(dir);
+    return args;
+  };
+  const fs::path temporary = work / "crash_tmp";
+  for(const int sig : {SIGABRT, SIGINT})
+  {
+    BOOST_TEST_CONTEXT("signal " << sig)
+    {
+      const int kept = run_and_signal(with_output("crash_kept"), temporary, sig);
+      BOOST_TEST_INFO("the program must end by the signal, not before it (exit status " << kept << ")");
+      BOOST_TEST((WIFSIGNALED(kept) && WTERMSIG(kept) == sig));
+      std::vector<std::string> left;
+      for(const auto& entry : fs::directory_iterator(work / "crash_kept"))
+        left.push_back(entry.path().filename().string());
+      BOOST_TEST(left == std::vector<std::string>{"keep.txt"}, boost::test_tools::per_element());
+      BOOST_TEST(fs::is_empty(temporary));
+
+      const int fresh = run_and_signal(with_output("crash_new/out"), temporary, sig);
+      BOOST_TEST((WIFSIGNALED(fresh) && WTERMSIG(fresh) == sig));
+      BOOST_TEST(!fs::exists(work / "crash_new"));
+      BOOST_TEST(fs::is_empty(temporary));
+    }
+  }
 }
 
 namespace {
@@ -572,6 +658,31 @@ BOOST_AUTO_TEST_CASE(runs_are_deterministic)
 
 // The program asks for huge pages only where the kernel gives them on
 // request, and never against a choice in GLIBC_TUNABLES.
+// The names of the options' items and of the layers, which other front ends
+// share: each reads back as the value it names.
+BOOST_AUTO_TEST_CASE(layer_names)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  const CAS3::Scale quantile = cas3::parse_scale("25%");
+  BOOST_TEST(quantile.kind() == CAS3::Scale::QUANTILE);
+  BOOST_TEST(quantile.value() == 0.25);
+  BOOST_TEST(cas3::scale_text(quantile) == "25%");
+  BOOST_TEST(cas3::scale_label(quantile) == "25pct");
+  BOOST_TEST(cas3::scale_label(cas3::parse_scale("0.35")) == "0p35");
+  BOOST_TEST(cas3::scale_label(cas3::parse_scale("auto")) == "auto");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("4s")) == "r4s");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("0.01")) == "r0p01");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("1e-7")) == "r1em07");
+  BOOST_TEST(cas3::neighborhood_label(cas3::parse_radius("auto")) == "rauto");
+  BOOST_TEST(cas3::neighborhood_label(CAS3::Neighborhood::rings(2)) == "k2");
+  BOOST_TEST(cas3::layer_label(quantile, CAS3::Neighborhood::rings(2), true) == "25pct_k2");
+  BOOST_TEST(cas3::layer_label(quantile, CAS3::Neighborhood::spacings(4), false) == "r4s");
+  for(const char* bad : {"150%", "-1", "nan", "big", "", "25%%"})
+    BOOST_CHECK_THROW(cas3::parse_scale(bad), std::invalid_argument);
+  for(const char* bad : {"0", "-2s", "inf", "4ss", "s", ""})
+    BOOST_CHECK_THROW(cas3::parse_radius(bad), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(huge_pages_are_asked_for_on_request_only)
 {
   const std::string madvise = "always [madvise] never";

@@ -1,20 +1,19 @@
 // What conformal_curvature writes per layer (a scale and a neighborhood):
 // the values per input point, the binary PLY point cloud that holds them,
-// and the surface PLY with the same values at its vertices. The
+// the surface PLY with the same values at its vertices, and the CSV. The
 // benchmark of the default job writes through the same code.
 #ifndef CAS3_CURVATURE_OUTPUT_H
 #define CAS3_CURVATURE_OUTPUT_H
 
 #include "cas3_curvature_colors.h"
+#include "cas3_layer_names.h"
 
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 #include <CGAL/boost/graph/iterator.h>
 
-#include <algorithm>
-#include <cmath>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <initializer_list>
 #include <ostream>
@@ -36,8 +35,8 @@ struct Layer
                                                          "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
     return names;
   }
-  std::string label;       // the property suffix: [scale_]neighborhood
-  std::string description; // for the file header
+  std::string label;       // the property suffix: layer_label()
+  std::string description; // for the file header: layer_description()
   std::vector<float> values;        // number_of_values per point
   std::vector<std::uint8_t> source; // Point_source per point
 
@@ -60,6 +59,26 @@ struct Layer
     }
   }
 };
+
+// What a layer is, for the comment lines of the files' headers: its scale
+// `a` (as requested), its neighborhood and, for a radius, its length in
+// input units.
+template <class Analysis>
+std::string layer_description(const Analysis& analysis, double a, const CGAL::Conformal_alpha_shapes_3::Scale& scale,
+                              const CGAL::Conformal_alpha_shapes_3::Neighborhood& neighborhood,
+                              const std::string& label)
+{
+  typedef CGAL::Conformal_alpha_shapes_3::Neighborhood Neighborhood;
+  std::ostringstream description;
+  description << "a = " << a << " (" << scale_text(scale) << "), ";
+  if(neighborhood.kind() == Neighborhood::RINGS)
+    description << int(neighborhood.value()) << "-ring";
+  else if(neighborhood.kind() == Neighborhood::AUTOMATIC)
+    description << "radius chosen per point (radius_" << label << ")";
+  else
+    description << "radius " << analysis.radius(neighborhood);
+  return description.str();
+}
 
 namespace output_detail {
 
@@ -98,6 +117,14 @@ inline void prefetch_values(const Layer& layer, std::size_t i)
   const float* row = layer.values.data() + i * Layer::number_of_values;
   prefetch(row);
   prefetch(row + Layer::number_of_values - 1);
+}
+
+// Appends a number the shortest way that reads back exactly.
+inline void append(std::string& out, double x)
+{
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, x);
+  out.append(buffer, r.ptr);
 }
 
 class Row_writer
@@ -183,8 +210,8 @@ void write_point_cloud(std::ostream& out, const std::vector<Point>& points, cons
 // input point (the library's surface lies at the smoothed positions) with
 // its input index, the float values of the scale's layers [first, last) and
 // the color of the first layer's H, then the triangles. Written straight
-// from the layers: copying the surface and adding a property map per value
-// took twice the memory of the values and more time than the write.
+// from the layers: a copy of the surface with a property map per value
+// would hold every value twice.
 template <class Surface, class Point>
 void write_surface(std::ostream& out, const Surface& surface, const std::vector<Point>& points,
                    const Layer* first, const Layer* last)
@@ -220,8 +247,8 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
   out << header.str();
   output_detail::Row_writer rows(out);
   // the rows are read by input index, out of memory order: each vertex asks
-  // for the rows of the one 16 places later, `lead` (at 10,000,000 points
-  // the file took 33 s to write, the point cloud's, read in order, 5 s)
+  // for the rows of the one 16 places later, `lead`, so that they are in
+  // the caches when their turn comes
   const auto written = surface.vertices();
   auto lead = written.begin();
   for(int ahead = 0; ahead < 16 && lead != written.end(); ++ahead)
@@ -254,49 +281,53 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
   }
 }
 
-// The 5%, 50% and 95% quantiles of the finite values, for the summaries.
-inline std::string quantiles(std::vector<double> values)
+// The CSV: its header line, then append_csv_rows() for each layer.
+inline const char* csv_header()
 {
-  values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
-               values.end());
-  if(values.empty())
-    return "            -            -            -";
-  char text[64];
-  auto at = [&](double q) {
-    const auto nth = values.begin() + std::ptrdiff_t(q * double(values.size() - 1));
-    std::nth_element(values.begin(), nth, values.end());
-    return *nth;
-  };
-  std::snprintf(text, sizeof text, " %12.4g %12.4g %12.4g", at(0.05), at(0.5), at(0.95));
-  return text;
+  return "point_index,x,y,z,a,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,outlier,"
+         "neighborhood,radius,source,distance\n";
 }
 
-// The summary line of a layer: its label and scale, the shares of points
-// with their own vertex, the nearest surface point and no value, the
-// median radius, and the 5%, 50% and 95% quantiles of H and K.
-template <class Kernel>
-std::string summary_row(const std::string& label, double a,
-                        const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures)
+// The CSV rows of one layer, a row per input point: the layer's scale `a`,
+// its neighborhood (labelled as cas3_layer_names.h says) and values.
+template <class Point, class Kernel>
+void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double a,
+                     const CGAL::Conformal_alpha_shapes_3::Neighborhood& neighborhood,
+                     const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures,
+                     const std::vector<bool>& outlier)
 {
-  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
-  std::size_t count[3] = {0, 0, 0};
-  std::vector<double> H, K, radius;
-  for(const CAS3::Point_curvature<Kernel>& c : curvatures)
+  using output_detail::append;
+  const std::string rings = neighborhood.kind() == CGAL::Conformal_alpha_shapes_3::Neighborhood::RINGS
+                              ? std::to_string(int(neighborhood.value())) : "0";
+  const std::string label = neighborhood_label(neighborhood);
+  std::string line;
+  for(std::size_t i = 0; i < points.size(); ++i)
   {
-    ++count[c.source];
-    H.push_back(c.mean_curvature);
-    K.push_back(c.gaussian_curvature);
-    if(std::isfinite(c.radius))
-      radius.push_back(c.radius);
+    const CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel>& c = curvatures[i];
+    line.clear();
+    line += std::to_string(i);
+    for(double x : {points[i].x(), points[i].y(), points[i].z(), a})
+    {
+      line += ',';
+      append(line, x);
+    }
+    line += ',' + rings + (c.on_surface() ? ",1" : ",0");
+    for(double x : {c.normal.x(), c.normal.y(), c.normal.z(), c.mean_curvature, c.gaussian_curvature,
+                    c.principal.max_curvature, c.principal.min_curvature, c.principal.max_direction.x(),
+                    c.principal.max_direction.y(), c.principal.max_direction.z(), c.principal.min_direction.x(),
+                    c.principal.min_direction.y(), c.principal.min_direction.z()})
+    {
+      line += ',';
+      append(line, x);
+    }
+    line += outlier[i] ? ",1," : ",0,";
+    line += label + ',';
+    append(line, c.radius);
+    line += ',' + std::to_string(int(c.source)) + ',';
+    append(line, c.distance);
+    line += '\n';
+    csv << line;
   }
-  if(!radius.empty())
-    std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
-  const double n = double(curvatures.size());
-  char row[160];
-  std::snprintf(row, sizeof row, "%-12s %10.4g %10.1f%% %7.1f%% %8.1f%% %14.4g", label.c_str(), a,
-                100.0 * double(count[CAS3::SURFACE_VERTEX]) / n, 100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / n,
-                100.0 * double(count[CAS3::NO_VALUE]) / n, radius.empty() ? std::nan("") : radius[radius.size() / 2]);
-  return row + std::string("  ") + quantiles(H) + "  " + quantiles(K);
 }
 
 } // namespace cas3

@@ -46,16 +46,13 @@ inline std::string tunables_with_huge_pages(const char* current, const std::stri
 // Starts the program again, with glibc's malloc asking for transparent huge
 // pages where the kernel gives them only on request: the stages walk the
 // triangulation and large arrays out of memory order, and fault fresh
-// memory in 4 KiB at a time (1,036,000 faults for 1,000,000 points, 31,000
-// with huge pages). A tunable is read when a process starts, so the
-// program executes itself anew (execv: the same process, with its id and
-// arguments) with GLIBC_TUNABLES extended by `tunables_with_huge_pages()`;
-// where that adds nothing, or the executable cannot be found, it goes on
-// as it is. Not under valgrind (the new image would run outside it) nor
-// in a secure-execution process. Measured on 1,000,000 noisy points, a
-// 2-core KVM guest, five runs each way: the program's median 78.1 -> 70.3
-// s, the same output bytes and peak (the manual, "The allocator"). Call it
-// first in main().
+// memory in 4 KiB at a time otherwise (the manual, "The allocator"). A
+// tunable is read when a process starts, so the program executes itself
+// anew (execv: the same process, with its id and arguments) with
+// GLIBC_TUNABLES extended by `tunables_with_huge_pages()`; where that adds
+// nothing, or the executable cannot be found, it goes on as it is. Not
+// under valgrind (the new image would run outside it) nor in a
+// secure-execution process. Call it first in main().
 inline void use_transparent_huge_pages(char** argv)
 {
 #if defined(__linux__) && defined(__GLIBC__)
@@ -95,10 +92,8 @@ inline void use_transparent_huge_pages(char** argv)
 // glibc gives each thread that allocates an arena of its own: what TBB's
 // threads free in theirs is not reused by the serial stages after them
 // (the advancing front above all), which fault in fresh pages instead, and
-// page faults are slow on virtual machines. Measured on 1,000,000 noisy
-// points on a 2-core KVM guest: the whole job 83.7 s -> 66.9 s, the front
-// 27.3 -> 17.8 s, the parallel curvature stage 32.7 -> 29.8 s. Call it
-// before any other thread starts.
+// page faults are slow on virtual machines. Call it before any other
+// thread starts.
 inline void use_one_malloc_arena()
 {
 #if defined(__GLIBC__)
@@ -109,10 +104,7 @@ inline void use_one_malloc_arena()
 
 // Gives the pages of freed memory back to the system (malloc_trim). The
 // advancing front's copy of the triangulation is freed in the middle of
-// the heap, which glibc keeps resident. On 1,000,000 noisy points the
-// process held 2,172 MiB after the surface's extraction without it, 894 MiB
-// with it; the curvature stage's peak moved less (2,239 -> 2,210 MiB, two
-// runs), as it reuses most of what was kept. Call it after the surface is
+// the heap, which glibc would keep resident. Call it after the surface is
 // extracted, before the curvature.
 inline void return_freed_memory()
 {

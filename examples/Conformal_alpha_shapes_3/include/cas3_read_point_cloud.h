@@ -12,6 +12,12 @@
 // promise more vertices than the file holds, NaN or infinite coordinates,
 // unknown extensions, missing or unreadable paths, directories, files
 // without any point.
+//
+// CGAL::IO::read_points() is not used for any format: it reads ASCII PLY
+// float properties as floats (every coordinate of CGAL's ball.ply and
+// building.ply would change), accepts files this reader rejects (a lying
+// point count, extra columns, NaN in a binary PLY, a PLY vertex without z),
+// reports errors on std::cerr without the file's name, and reads no .obj.
 #ifndef CAS3_READ_POINT_CLOUD_H
 #define CAS3_READ_POINT_CLOUD_H
 

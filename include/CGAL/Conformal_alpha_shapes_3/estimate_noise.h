@@ -39,11 +39,16 @@ struct Noise_estimate
   /// surface detail that the sampling does not resolve grows with the size
   double noise_24 = 0;
 
+  /// Whether the reading grows by more than 30% from 16 to 24 neighbors:
+  /// what it measures is then mostly surface detail that the sampling does
+  /// not resolve, not noise (a reading that is not a number counts as such).
+  bool shows_unresolved_detail() const { return !(noise_24 <= 1.3 * noise); }
+
   /// Whether automatic denoising smooths the points: the noise exceeds
   /// 0.02 (below it the interpolating surface does not fold; clean samples
-  /// read 0.011 or less, even with detail) and does not grow by more than
-  /// 30% from 16 to 24 neighbors (which would mark unresolved detail).
-  bool calls_for_denoising() const { return noise > 0.02 && noise_24 <= 1.3 * noise; }
+  /// read 0.011 or less, even with detail) and is not unresolved detail
+  /// (`shows_unresolved_detail()`).
+  bool calls_for_denoising() const { return noise > 0.02 && !shows_unresolved_detail(); }
 };
 
 namespace internal {

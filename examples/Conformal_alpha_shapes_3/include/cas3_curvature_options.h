@@ -1,0 +1,222 @@
+// The command line of the conformal_curvature program: its usage text and
+// the options it reads, checked before any work so that a mistyped flag
+// fails at once, naming the flag and the item.
+#ifndef CAS3_CURVATURE_OPTIONS_H
+#define CAS3_CURVATURE_OPTIONS_H
+
+#include "cas3_layer_names.h"
+
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+
+#include <algorithm>
+#include <charconv>
+#include <initializer_list>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace cas3 {
+
+inline const char* curvature_usage()
+{
+  return "usage: conformal_curvature [INPUT] [--alpha LIST] [--radius LIST] [--rings LIST]\n"
+         "                           [--estimator NAME] [--denoise MODE] [--denoise-neighbors K]\n"
+         "                           [--extraction NAME] [--output DIR] [--csv] [--quiet] [--help]\n"
+         "\n"
+         "Multi-scale curvature of a point cloud on its conformal alpha shape.\n"
+         "  INPUT            .xyz, .pwn, .ply, .off or .obj (meshes: their vertices);\n"
+         "                   default: the bundled Stanford bunny sample\n"
+         "  --alpha LIST     comma list of conformal scales a: values > 0 (0.5),\n"
+         "                   quantiles of the facet values in (0%, 100%] (25%; the\n"
+         "                   paper's figures use 10%,25%,35%,50%) and/or auto; default auto\n"
+         "  --radius LIST    comma list of neighborhood radii of the curvature fit:\n"
+         "                   model units (0.01), multiples of the measured sample\n"
+         "                   spacing (4s) and/or auto (chosen per point from the data);\n"
+         "                   default auto,2s,4s,8s,16s unless --rings is given\n"
+         "  --rings LIST     comma list of ring sizes from 1 to 100, instead of or\n"
+         "                   besides radii\n"
+         "  --estimator NAME quadric (default), euler-least-squares or paper\n"
+         "  --denoise MODE   auto (default: smooth when the estimated noise exceeds\n"
+         "                   0.02 x spacing), on or off\n"
+         "  --denoise-neighbors K  neighbors of the smoothing jet fit; default: from\n"
+         "                   the estimated noise (24 to 64)\n"
+         "  --extraction NAME front (default: one sheet per part, open or closed)\n"
+         "                   or solid (the boundary of the enclosed solid)\n"
+         "  --output DIR     default ./conformal_curvature_out\n"
+         "  --csv            also write DIR/curvatures.csv, a row per point per layer\n"
+         "  --quiet          no progress and no summary\n"
+         "Writes DIR/curvatures.ply (binary point cloud: per point x y z, outlier,\n"
+         "and per layer L = [scale_]neighborhood, e.g. r4s or 25pct_k2: nx_L ny_L\n"
+         "nz_L H_L K_L k1_L k2_L d1x_L .. d2z_L radius_L distance_L source_L, where\n"
+         "source 0 = the point's own surface vertex, 1 = the nearest surface point,\n"
+         "2 = no value) and DIR/surface_<scale>.ply per scale.\n"
+         "The points are recentered and rescaled before the work (results are in the\n"
+         "input's units); isolated far outliers are left out and get outlier = 1.\n"
+         "A failed run exits with status 1 and one line on stderr, and leaves DIR\n"
+         "as it was.\n"
+         "Where the kernel gives transparent huge pages only on request, the program\n"
+         "starts itself again with glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES\n"
+         "(faster on large inputs), unless GLIBC_TUNABLES names that tunable already\n"
+         "(glibc.malloc.hugetlb=0 keeps malloc's default).\n";
+}
+
+// A mistake on the command line; what() is one line naming the flag.
+struct Option_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Curvature_options
+{
+  std::string input = CGAL_CAS3_DEFAULT_INPUT;
+  std::vector<CGAL::Conformal_alpha_shapes_3::Scale> scales = CGAL::Conformal_alpha_shapes_3::default_scales();
+  std::vector<CGAL::Conformal_alpha_shapes_3::Neighborhood> neighborhoods =
+    CGAL::Conformal_alpha_shapes_3::default_neighborhoods();
+  CGAL::Conformal_alpha_shapes_3::Curvature_estimator estimator = CGAL::Conformal_alpha_shapes_3::QUADRIC_FIT;
+  CGAL::Conformal_alpha_shapes_3::Denoising denoising = CGAL::Conformal_alpha_shapes_3::AUTOMATIC_DENOISING;
+  unsigned int denoising_neighbors = 0;  // 0: as the library's plan says
+  CGAL::Conformal_alpha_shapes_3::Surface_extraction extraction = CGAL::Conformal_alpha_shapes_3::ADVANCING_FRONT;
+  std::string output = "conformal_curvature_out";
+  bool csv = false;
+  bool quiet = false;
+  bool help = false;
+};
+
+namespace options_detail {
+
+inline std::vector<std::string> split_list(const std::string& list)
+{
+  std::vector<std::string> items;
+  std::stringstream in(list);
+  std::string item;
+  while(std::getline(in, item, ','))
+    items.push_back(item);
+  if(items.empty() || list.back() == ',' || std::find(items.begin(), items.end(), "") != items.end())
+    throw Option_error("empty item in the list '" + list + "'");
+  return items;
+}
+
+// Whether `item` spells a whole number from `low` to `high`, stored in `n`.
+template <class Integer>
+bool whole_number(const std::string& item, Integer low, Integer high, Integer& n)
+{
+  const auto r = std::from_chars(item.data(), item.data() + item.size(), n);
+  return r.ec == std::errc() && r.ptr == item.data() + item.size() && n >= low && n <= high;
+}
+
+// Sets `value` to the choice that `name` names among `choices`, the values
+// of the flag `flag`; an error names the flag, `what` it expected and the
+// choices.
+template <class Value>
+void choose(Value& value, const std::string& flag, const std::string& what, const std::string& name,
+            std::initializer_list<std::pair<const char*, Value> > choices)
+{
+  std::string names;
+  for(const auto& choice : choices)
+  {
+    if(name == choice.first)
+    {
+      value = choice.second;
+      return;
+    }
+    names += (names.empty() ? "" : ", ") + std::string(choice.first);
+  }
+  throw Option_error(flag + ": unknown " + what + " '" + name + "' (" + names + ")");
+}
+
+} // namespace options_detail
+
+// Reads the command line. Throws Option_error.
+inline Curvature_options parse_curvature_options(int argc, char* argv[])
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  using options_detail::choose;
+  using options_detail::split_list;
+  using options_detail::whole_number;
+  Curvature_options o;
+  bool input_given = false, neighborhoods_given = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc || (std::string(argv[i + 1]).rfind("--", 0) == 0))
+        throw Option_error("option " + arg + " needs a value");
+      return argv[++i];
+    };
+    if(arg == "--help" || arg == "-h")
+      o.help = true;
+    else if(arg == "--quiet")
+      o.quiet = true;
+    else if(arg == "--csv")
+      o.csv = true;
+    else if(arg == "--alpha")
+    {
+      o.scales.clear();
+      for(const std::string& item : split_list(value()))
+      {
+        try { o.scales.push_back(parse_scale(item)); }
+        catch(const std::invalid_argument& e) { throw Option_error(std::string("--alpha: ") + e.what()); }
+        if(o.scales.back().kind() != CAS3::Scale::AUTOMATIC && !(o.scales.back().value() > 0))
+          throw Option_error("--alpha: a scale must be above 0 (a value > 0 or a quantile in (0%, 100%]): '" + item
+                             + "'");
+      }
+    }
+    else if(arg == "--rings" || arg == "--radius")
+    {
+      if(!neighborhoods_given)
+        o.neighborhoods.clear();
+      neighborhoods_given = true;
+      for(const std::string& item : split_list(value()))
+      {
+        if(arg == "--radius")
+        {
+          try { o.neighborhoods.push_back(parse_radius(item)); }
+          catch(const std::invalid_argument& e) { throw Option_error(std::string("--radius: ") + e.what()); }
+          continue;
+        }
+        int k = 0;
+        if(!whole_number(item, 1, 100, k))
+          throw Option_error("--rings: not a ring size from 1 to 100: '" + item + "'");
+        o.neighborhoods.push_back(CAS3::Neighborhood::rings(k));
+      }
+    }
+    else if(arg == "--estimator")
+      choose(o.estimator, arg, "estimator", value(), {{"quadric", CAS3::QUADRIC_FIT},
+        {"euler-least-squares", CAS3::EULER_LEAST_SQUARES_FIT}, {"paper", CAS3::PAPER_EULER_FIT}});
+    else if(arg == "--denoise")
+      choose(o.denoising, arg, "mode", value(), {{"auto", CAS3::AUTOMATIC_DENOISING},
+        {"on", CAS3::ALWAYS_DENOISE}, {"off", CAS3::NEVER_DENOISE}});
+    else if(arg == "--denoise-neighbors")
+    {
+      const std::string item = value();
+      if(!whole_number(item, 7u, ~0u, o.denoising_neighbors))
+        throw Option_error("--denoise-neighbors: not a neighbor count >= 7: '" + item + "'");
+    }
+    else if(arg == "--extraction")
+      choose(o.extraction, arg, "extraction", value(),
+             {{"front", CAS3::ADVANCING_FRONT}, {"solid", CAS3::SOLID_BOUNDARY}});
+    else if(arg == "--output")
+    {
+      o.output = value();
+      if(o.output.empty())
+        throw Option_error("--output: empty directory name");
+    }
+    else if(!arg.empty() && arg[0] == '-')
+      throw Option_error("unknown option " + arg);
+    else if(input_given)
+      throw Option_error("more than one input file: " + o.input + ", " + arg);
+    else
+    {
+      o.input = arg;
+      input_given = true;
+    }
+  }
+  return o;
+}
+
+} // namespace cas3
+
+#endif // CAS3_CURVATURE_OPTIONS_H

@@ -1,0 +1,128 @@
+// The summary that conformal_curvature prints on stdout: the input, its
+// noise and smoothing, how the surfaces were extracted and oriented, a line
+// per scale and a row per layer. The benchmark of the default job makes the
+// same rows.
+#ifndef CAS3_CURVATURE_SUMMARY_H
+#define CAS3_CURVATURE_SUMMARY_H
+
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace cas3 {
+
+// The 5%, 50% and 95% quantiles of the finite values, for the summaries.
+inline std::string quantiles(std::vector<double> values)
+{
+  values.erase(std::remove_if(values.begin(), values.end(), [](double x) { return !std::isfinite(x); }),
+               values.end());
+  if(values.empty())
+    return "            -            -            -";
+  char text[64];
+  auto at = [&](double q) {
+    const auto nth = values.begin() + std::ptrdiff_t(q * double(values.size() - 1));
+    std::nth_element(values.begin(), nth, values.end());
+    return *nth;
+  };
+  std::snprintf(text, sizeof text, " %12.4g %12.4g %12.4g", at(0.05), at(0.5), at(0.95));
+  return text;
+}
+
+// The summary line of a layer: its label and scale, the shares of points
+// with their own vertex, the nearest surface point and no value, the
+// median radius, and the 5%, 50% and 95% quantiles of H and K.
+template <class Kernel>
+std::string summary_row(const std::string& label, double a,
+                        const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  std::size_t count[3] = {0, 0, 0};
+  std::vector<double> H, K, radius;
+  for(const CAS3::Point_curvature<Kernel>& c : curvatures)
+  {
+    ++count[c.source];
+    H.push_back(c.mean_curvature);
+    K.push_back(c.gaussian_curvature);
+    if(std::isfinite(c.radius))
+      radius.push_back(c.radius);
+  }
+  if(!radius.empty())
+    std::nth_element(radius.begin(), radius.begin() + std::ptrdiff_t(radius.size() / 2), radius.end());
+  const double n = double(curvatures.size());
+  char row[160];
+  std::snprintf(row, sizeof row, "%-12s %10.4g %10.1f%% %7.1f%% %8.1f%% %14.4g", label.c_str(), a,
+                100.0 * double(count[CAS3::SURFACE_VERTEX]) / n, 100.0 * double(count[CAS3::NEAREST_SURFACE_POINT]) / n,
+                100.0 * double(count[CAS3::NO_VALUE]) / n, radius.empty() ? std::nan("") : radius[radius.size() / 2]);
+  return row + std::string("  ") + quantiles(H) + "  " + quantiles(K);
+}
+
+// The head of the summary: the input and its outliers, the noise and the
+// smoothing, the surface and its orientation, and the header of the rows.
+template <class Kernel>
+std::string summary_head(const std::string& input, const CGAL::Conformal_alpha_shapes_3::Multiscale_curvatures<Kernel>& analysis)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  std::string head = input + ": " + std::to_string(analysis.number_of_input_points()) + " points";
+  if(!analysis.outliers().empty())
+    head += ", " + std::to_string(analysis.outliers().size()) + " isolated far outliers left out (outlier column)";
+  const CAS3::Noise_estimate noise = analysis.noise();
+  char text[200];
+  std::snprintf(text, sizeof text, "noise: %.3g x spacing (spacing %.4g)%s; ", noise.noise, noise.spacing,
+                noise.shows_unresolved_detail() ? ", mostly unresolved detail" : "");
+  const CAS3::Denoising_plan& smoothing = analysis.denoising();
+  head += "\n" + std::string(text)
+          + (smoothing.passes == 0 ? std::string("no smoothing\n")
+             : "smoothed by " + std::to_string(smoothing.passes) + " jet pass(es) over "
+               + std::to_string(smoothing.neighbors) + " neighbors before building the shape\n");
+  head += "surface: " + std::string(analysis.extraction() == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
+          + "; orientation: "
+          + (analysis.has_reference_normals()
+               ? "the majority of the input normals, per sheet; values per point"
+               : "closed sheets outward, open sheets away from the center, with those they continue across gaps")
+          + "\n";
+  return head + "layer               a  own vertex  nearest  no value  radius(median)"
+                "    H:  5%          50%          95%      K:  5%          50%          95%\n";
+}
+
+// The line of a scale (`scale`, as the user wrote it): the parts of its
+// surface and the points off it.
+inline std::string summary_scale_line(const std::string& scale, const CGAL::Conformal_alpha_shapes_3::Surface_report& report)
+{
+  return "scale " + scale + ": " + std::to_string(report.number_of_parts) + " parts ("
+         + std::to_string(report.number_of_closed_parts) + " closed, " + std::to_string(report.number_of_open_parts())
+         + " open), " + std::to_string(report.number_of_points_off_surface) + " points off the surface\n";
+}
+
+// How far the oriented sheets of `surface` (after estimate_curvatures(),
+// which sets its normals) follow the input normals `normals`, before each
+// point's values are turned to its own normal's side: a line for the scale
+// `scale`.
+template <class Surface, class Vector>
+std::string summary_normals_line(const std::string& scale, const Surface& surface, const std::vector<Vector>& normals)
+{
+  typedef typename Surface::Vertex_index Vertex;
+  const auto index = surface.template property_map<Vertex, std::size_t>("v:input_index").first;
+  const auto normal = surface.template property_map<Vertex, Vector>("v:normal").first;
+  std::size_t agree = 0, compared = 0;
+  for(Vertex v : surface.vertices())
+    if(normal[v] != Vector(CGAL::NULL_VECTOR) && std::isfinite(normal[v].x()))
+    {
+      ++compared;
+      agree += normal[v] * normals[index[v]] > 0 ? 1 : 0;
+    }
+  char line[160];
+  std::snprintf(line, sizeof line,
+                "scale %s: the sheets agree with the input normals at %.1f%% of their vertices; "
+                "each point's values are on its own normal's side\n",
+                scale.c_str(), compared == 0 ? 0.0 : 100.0 * double(agree) / double(compared));
+  return line;
+}
+
+} // namespace cas3
+
+#endif // CAS3_CURVATURE_SUMMARY_H
