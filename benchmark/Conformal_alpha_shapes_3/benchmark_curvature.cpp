@@ -31,53 +31,16 @@ typedef Mesh::Vertex_index Vertex;
 namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
 
 // A test surface: a mesh with the exact normal, H and K at each vertex.
-struct Surface
-{
-  std::string name;
-  Mesh mesh;
-  std::vector<Vector> normal;
-  std::vector<double> H, K;
-};
+typedef cas3_test::Mesh_with_truth<Mesh, Vector> Surface;
 
 Surface ellipsoid(std::size_t n, double a, double b, double c)
 {
-  Surface s;
-  s.name = "ellipsoid " + std::to_string(int(a * 10)) + ":" + std::to_string(int(b * 10)) + ":" +
-           std::to_string(int(c * 10));
-  cas3_test::irregular_sphere<Mesh, Point>(n, 1.0, s.mesh);
-  for(Vertex v : s.mesh.vertices())
-  {
-    Point& p = s.mesh.point(v);
-    p = Point(a * p.x(), b * p.y(), c * p.z());
-    const double x = p.x(), y = p.y(), z = p.z();
-    const double h = std::sqrt(x * x / std::pow(a, 4) + y * y / std::pow(b, 4) + z * z / std::pow(c, 4));
-    const double abc2 = a * a * b * b * c * c;
-    s.normal.push_back(Vector(x / (a * a * h), y / (b * b * h), z / (c * c * h)));
-    s.K.push_back(1 / (abc2 * std::pow(h, 4)));
-    s.H.push_back(std::abs(x * x + y * y + z * z - a * a - b * b - c * c) / (2 * abc2 * std::pow(h, 3)));
-  }
-  return s;
+  return cas3_test::irregular_ellipsoid_with_truth<Mesh, Point, Vector>(n, a, b, c);
 }
 
 Surface torus(std::size_t nu, std::size_t nv, double R, double r)
 {
-  Surface s;
-  s.name = "torus 1:0.35";
-  cas3_test::parametric_grid<Mesh, Point>(nu, nv, true, true, 0.3, [&](double u, double v) {
-    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
-    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
-  }, s.mesh);
-  for(Vertex v : s.mesh.vertices())
-  {
-    const Point& p = s.mesh.point(v);
-    const double rho = std::sqrt(p.x() * p.x() + p.y() * p.y());
-    const double t = std::atan2(p.z(), rho - R);
-    const double k1 = 1 / r, k2 = std::cos(t) / (R + r * std::cos(t));
-    s.normal.push_back(Vector(std::cos(t) * p.x() / rho, std::cos(t) * p.y() / rho, std::sin(t)));
-    s.H.push_back((k1 + k2) / 2);
-    s.K.push_back(k1 * k2);
-  }
-  return s;
+  return cas3_test::jittered_torus_with_truth<Mesh, Point, Vector>(nu, nv, R, r);
 }
 
 // Moves every vertex along its exact normal by Gaussian noise of `sigma`
@@ -94,26 +57,11 @@ void add_noise(Surface& s, double sigma)
     s.mesh.point(v) = s.mesh.point(v) + gauss(gen) * s.normal[v.idx()];
 }
 
-struct Errors { double h50, h90, k50, k90; };
-
-double quantile(std::vector<double> v, double q)
-{
-  std::sort(v.begin(), v.end());
-  return v.empty() ? NAN : v[std::size_t(q * double(v.size() - 1))];
-}
+typedef cas3_test::Curvature_errors Errors;
 
 Errors errors(const Surface& s, const std::vector<double>& H, const std::vector<double>& K)
 {
-  // relative to the largest curvature scale of the surface, so that K near 0
-  // (torus inner/outer circles) does not blow up the relative error
-  std::vector<double> eh, ek;
-  for(std::size_t i = 0; i < H.size(); ++i)
-  {
-    const double kmax = std::abs(s.H[i]) + std::sqrt(std::max(0.0, s.H[i] * s.H[i] - s.K[i]));
-    eh.push_back(std::isfinite(H[i]) ? std::abs(H[i] - s.H[i]) / std::max(std::abs(s.H[i]), 0.5 * kmax) : 1e9);
-    ek.push_back(std::isfinite(K[i]) ? std::abs(K[i] - s.K[i]) / std::max(std::abs(s.K[i]), 0.25 * kmax * kmax) : 1e9);
-  }
-  return {quantile(eh, 0.5), quantile(eh, 0.9), quantile(ek, 0.5), quantile(ek, 0.9)};
+  return cas3_test::curvature_errors(s, H, K);
 }
 
 Errors ours(const Surface& s, int rings, CAS3::Curvature_estimator e)

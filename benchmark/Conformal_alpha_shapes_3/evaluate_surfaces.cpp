@@ -26,8 +26,8 @@
 // on a sphere with one smooth dent), the latter judged against the truth
 // with the bumps and against the truth of the smooth dented sphere
 // (dent_bumps~smooth). Finally the real scans kitten.xyz, oni.pwn,
-// ball.ply, building.ply from --data (default: ../shared/data beside the
-// repository), whose reference normals are the only truth: each is run
+// ball.ply, building.ply from --data (default: the build tree's copy of
+// libcgal-demo's, see CMakeLists.txt), whose reference normals are the only truth: each is run
 // given its normals ([normals]) and as x y z only ([xyz]).
 // Synthetic data is given to the pipeline without normals unless
 // --normals (then the true normals). The exact plane at noise 0 gets a
@@ -60,13 +60,11 @@
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Monge_via_jet_fitting.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Search_traits_3.h>
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_benchmark.h"
+#include "cas3_jet_fitting.h"
 #include "cas3_layer_names.h"
 
 #include <algorithm>
@@ -177,22 +175,8 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
 // on a shared machine
 double cpu_seconds_since(std::clock_t start) { return double(std::clock() - start) / CLOCKS_PER_SEC; }
 
-double quantile(std::vector<double> v, double q)
-{
-  if(v.empty())
-    return nan_value;
-  const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size())));
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
-  return v[k];
-}
-
-double median_abs(const std::vector<double>& v)
-{
-  std::vector<double> a;
-  a.reserve(v.size());
-  for(double x : v) a.push_back(std::abs(x));
-  return quantile(a, 0.5);
-}
+using cas3_test::median_abs;
+using cas3_test::quantile;
 
 struct Accuracy
 {
@@ -269,40 +253,11 @@ struct Jet_accuracy
 std::vector<Jet_accuracy> jet_accuracy(const Sample& s, const Sample& truth, const std::vector<int>& ks,
                                        std::size_t samples, const Judge& judge)
 {
-  typedef CGAL::Search_traits_3<Kernel> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-  typedef CGAL::Monge_via_jet_fitting<Kernel> Fitting;
-  const Search::Tree tree(s.points.begin(), s.points.end());
-  const std::size_t n = s.points.size();
-  const std::size_t step = samples == 0 || samples >= n ? 1 : n / samples;
-  std::vector<std::size_t> index;
-  for(std::size_t i = 0; i < n; i += step) index.push_back(i);
-  const int k_max = *std::max_element(ks.begin(), ks.end());
-  std::vector<std::vector<Vector> > normal(ks.size());
-  std::vector<std::vector<double> > H(ks.size()), K(ks.size());
-  std::vector<Point> neighbors;
-  for(std::size_t i : index)
-  {
-    neighbors.clear();
-    const Search search(tree, s.points[i], unsigned(k_max));
-    for(auto it = search.begin(); it != search.end(); ++it) neighbors.push_back(it->first);
-    for(std::size_t j = 0; j < ks.size(); ++j)
-    {
-      const std::size_t k = std::min<std::size_t>(std::size_t(ks[j]), neighbors.size());
-      Fitting fitting;
-      Fitting::Monge_form form = fitting(neighbors.begin(), neighbors.begin() + std::ptrdiff_t(k), 2, 2);
-      form.comply_wrt_given_normal(truth.normals[i]);
-      // Monge form z = (k1 x^2 + k2 y^2) / 2 along the normal: convex with
-      // outward normal has k1, k2 < 0 there, > 0 in this package's convention
-      const double k1 = -form.principal_curvatures(0), k2 = -form.principal_curvatures(1);
-      normal[j].push_back(form.normal_direction());
-      H[j].push_back((k1 + k2) / 2);
-      K[j].push_back(k1 * k2);
-    }
-  }
+  const std::vector<std::size_t> index = cas3_test::spread_indices(s.points.size(), samples);
+  const cas3_test::Jet_estimates<Kernel> jet = cas3_test::jet_fitting<Kernel>(s.points, truth.normals, index, ks);
   std::vector<Jet_accuracy> out;
   for(std::size_t j = 0; j < ks.size(); ++j)
-    out.push_back(Jet_accuracy{ks[j], accuracy(normal[j], H[j], K[j], index, truth, judge)});
+    out.push_back(Jet_accuracy{ks[j], accuracy(jet.normal[j], jet.H[j], jet.K[j], index, truth, judge)});
   return out;
 }
 
@@ -412,7 +367,7 @@ struct Options
   bool large = false, normals = false, jet = true;
   double scale_factor = 1;
   std::size_t jet_samples = 5000;
-  std::string data = CAS3_SHARED_DATA;
+  std::string data = CAS3_TEST_DATA;
   std::string csv;
   std::string write_points;  // a folder, or empty
   bool selected(const std::string& name) const

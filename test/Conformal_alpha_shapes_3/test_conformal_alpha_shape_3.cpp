@@ -29,6 +29,7 @@
 #include <limits>
 #include <list>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -141,6 +142,148 @@ BOOST_AUTO_TEST_CASE(oracle_noisy_ellipsoid)
 BOOST_AUTO_TEST_CASE(oracle_noisy_torus)
 {
   check_against_oracle(cas3_test::torus_sample<Point>(2000, 1.0, 0.3, 0.01), "noisy torus");
+}
+
+namespace {
+
+// The conformal value of every finite simplex of `pts` with the local
+// scales `scales`, from the definition (the manual, "Values"), by brute
+// force and without the class: the Delaunay cells are the 4-subsets whose
+// circumsphere holds no other point; the ordinary value alpha(s) of a cell
+// is its circumradius, that of a facet or an edge the radius of its
+// smallest circumscribing ball when no other point is inside that ball,
+// else the smallest value of its cofaces; a(s) = alpha(s) / (the smallest
+// local scale of its vertices), 0 for a vertex. Keyed by the sorted input
+// indices of the vertices (the points must be distinct, in general
+// position).
+std::map<std::vector<std::size_t>, double> conformal_values_by_definition(const std::vector<Point>& pts,
+                                                                          const std::vector<double>& scales)
+{
+  const std::size_t n = pts.size();
+  typedef std::vector<std::size_t> Simplex_key;
+  std::map<Simplex_key, double> alpha;                       // ordinary values
+  std::map<Simplex_key, std::vector<double> > coface_values;  // of the facets and edges
+  auto empty_ball = [&](const Simplex_key& s, auto inside) {
+    for(std::size_t m = 0; m < n; ++m)
+      if(std::find(s.begin(), s.end(), m) == s.end() && inside(pts[m]))
+        return false;
+    return true;
+  };
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = i + 1; j < n; ++j)
+      for(std::size_t k = j + 1; k < n; ++k)
+        for(std::size_t l = k + 1; l < n; ++l)
+        {
+          const Point &p = pts[i], &q = pts[j], &r = pts[k], &s = pts[l];
+          if(CGAL::coplanar(p, q, r, s))
+            continue;
+          const Simplex_key cell = {i, j, k, l};
+          if(!empty_ball(cell, [&](const Point& t) {
+               return CGAL::side_of_bounded_sphere(p, q, r, s, t) == CGAL::ON_BOUNDED_SIDE; }))
+            continue;
+          alpha[cell] = std::sqrt(CGAL::squared_radius(p, q, r, s));
+          for(std::size_t drop = 0; drop < 4; ++drop)
+          {
+            Simplex_key facet;
+            for(std::size_t x = 0; x < 4; ++x)
+              if(x != drop)
+                facet.push_back(cell[x]);
+            coface_values[facet].push_back(alpha[cell]);
+          }
+        }
+  std::vector<Simplex_key> facets;
+  for(const auto& f : coface_values)
+    facets.push_back(f.first);
+  for(const Simplex_key& f : facets)
+  {
+    const Point &p = pts[f[0]], &q = pts[f[1]], &r = pts[f[2]];
+    const std::vector<double>& cofaces = coface_values[f];
+    alpha[f] = empty_ball(f, [&](const Point& t) { return CGAL::side_of_bounded_sphere(p, q, r, t) == CGAL::ON_BOUNDED_SIDE; })
+      ? std::sqrt(CGAL::squared_radius(p, q, r))
+      : *std::min_element(cofaces.begin(), cofaces.end());
+    for(const Simplex_key& e : {Simplex_key{f[0], f[1]}, Simplex_key{f[0], f[2]}, Simplex_key{f[1], f[2]}})
+      coface_values[e].push_back(alpha[f]);
+  }
+  for(const auto& e : coface_values)
+  {
+    if(e.first.size() != 2)
+      continue;
+    const Point &p = pts[e.first[0]], &q = pts[e.first[1]];
+    alpha[e.first] = empty_ball(e.first, [&](const Point& t) { return CGAL::side_of_bounded_sphere(p, q, t) == CGAL::ON_BOUNDED_SIDE; })
+      ? std::sqrt(CGAL::squared_distance(p, q)) / 2
+      : *std::min_element(e.second.begin(), e.second.end());
+  }
+  std::map<Simplex_key, double> conformal;
+  for(std::size_t i = 0; i < n; ++i)
+    conformal[Simplex_key{i}] = 0;
+  for(const auto& s : alpha)
+  {
+    double smallest = scales[s.first[0]];
+    for(std::size_t v : s.first)
+      smallest = (std::min)(smallest, scales[v]);
+    conformal[s.first] = s.second / smallest;
+  }
+  return conformal;
+}
+
+} // namespace
+
+// The part of the values that is this package's own: on small random sets
+// with random local scales (a factor 30 between the smallest and the
+// largest), every finite simplex's conformal value, through the filtration,
+// is the one of the definition computed by brute force, and the filtration
+// holds exactly the Delaunay simplices.
+BOOST_AUTO_TEST_CASE(oracle_for_random_local_scales)
+{
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> exponent(-1.5, 2);
+  for(int trial = 0; trial < 8; ++trial)
+  {
+    // a volume, and a noisy sphere (many facets and edges that take a
+    // coface's value)
+    const std::vector<Point> pts = trial % 2 == 0
+      ? cas3_test::cube_volume_sample<Point>(36, unsigned(100 + trial))
+      : cas3_test::ellipsoid_sample<Point>(36, 1, 0.8, 0.6, 0.05, unsigned(100 + trial), 1e-3);
+    std::vector<double> scales;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      scales.push_back(std::exp(exponent(random)));
+    const auto expected = conformal_values_by_definition(pts, scales);
+    const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_scales(scales));
+    std::vector<std::pair<Cas::Simplex, double> > filtration;
+    cas.filtration_with_alpha_values(std::back_inserter(filtration));
+    std::size_t wrong = 0, unknown = 0;
+    for(const auto& entry : filtration)
+    {
+      std::vector<std::size_t> simplex_key;
+      const Cas::Simplex& s = entry.first;
+      const int dimension = s.dimension();
+      for(int k = 0; k <= dimension; ++k)
+      {
+        const Cas::Vertex_handle v = dimension == 0 ? Cas::Vertex_handle(s)
+          : dimension == 1 ? (k == 0 ? Cas::Edge(s).first->vertex(Cas::Edge(s).second)
+                                     : Cas::Edge(s).first->vertex(Cas::Edge(s).third))
+          : dimension == 2 ? Cas::Facet(s).first->vertex((Cas::Facet(s).second + 1 + k) & 3)
+                           : Cas::Cell_handle(s)->vertex(k);
+        simplex_key.push_back(*cas.input_indices(v).begin());
+      }
+      std::sort(simplex_key.begin(), simplex_key.end());
+      const auto it = expected.find(simplex_key);
+      if(it == expected.end())
+      {
+        ++unknown;
+        continue;
+      }
+      if(!(std::abs(entry.second - it->second) <= 1e-9 * it->second) && wrong++ == 0)
+        BOOST_TEST_MESSAGE("trial " << trial << ": a simplex of dimension " << dimension << " has the value "
+                           << entry.second << ", by the definition " << it->second);
+    }
+    BOOST_TEST_CONTEXT("trial " << trial)
+    {
+      BOOST_TEST(filtration.size() == expected.size());
+      BOOST_TEST(unknown == 0u);
+      BOOST_TEST(wrong == 0u);
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(poles_on_a_sphere)
@@ -388,7 +531,7 @@ BOOST_AUTO_TEST_CASE(scales_and_quantiles_outside_their_range_throw)
 // points that fuzz_pipeline's input hygiene made of its bytes (far outliers,
 // up to 2^152, kept beside points of size 1). Two causes: the sample
 // spacing, kept as a float squared length, overflowed to an infinite local
-// scale, so that facet values were NaN or infinite and suggest_alpha()
+// scale, so that facet values were NaN or infinite and suggest_scale()
 // returned +infinity; at that scale the outside walk did not cross the
 // infinite facets, left infinite cells in the solid, and the splitting read
 // before the start of the boundary facets.
@@ -479,6 +622,9 @@ BOOST_AUTO_TEST_CASE(bundled_bunny_builds)
   BOOST_TEST(cas.alpha_at_quantile(0.1) < cas.alpha_at_quantile(0.5));
 }
 
+#ifdef CGAL_LINKED_WITH_TBB
+// Built only with TBB: without it both constructions would be the same
+// serial path (CI's Release build requires TBB, CAS3_REQUIRE_TBB).
 namespace {
 
 // Everything the construction stores, as bits: each cell's radius and
@@ -505,28 +651,18 @@ std::vector<double> construction_bits(const Cas& cas)
 std::vector<double> construction_bits_on_one_thread(const std::vector<Point>& pts)
 {
   std::vector<double> bits;
-  auto build = [&]() { bits = construction_bits(Cas(pts.begin(), pts.end())); };
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::task_arena(1).execute(build);
-#else
-  build();
-#endif
+  tbb::task_arena(1).execute([&]() { bits = construction_bits(Cas(pts.begin(), pts.end())); });
   return bits;
 }
 
 } // namespace
 
-// The construction's passes over the cells run on TBB's threads when it is
-// available (in chunks of cells, merged): on one thread they give the same
-// bits. A lattice on the surface of a cube has many cells of equal radius, so
-// the order in which poles of equal distance are met is tested too.
+// The construction's passes over the cells run on TBB's threads (in chunks
+// of cells, merged): on one thread they give the same bits. A lattice on the
+// surface of a cube has many cells of equal radius, so the order in which
+// poles of equal distance are met is tested too.
 BOOST_AUTO_TEST_CASE(construction_on_one_thread_gives_the_same_bits)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  BOOST_TEST_MESSAGE("TBB: the construction uses threads");
-#else
-  BOOST_TEST_MESSAGE("no TBB: both constructions are serial");
-#endif
   std::vector<Point> lattice;
   const int n = 24;
   for(int x = 0; x <= n; ++x)
@@ -543,3 +679,4 @@ BOOST_AUTO_TEST_CASE(construction_on_one_thread_gives_the_same_bits)
                 && std::memcmp(one_thread.data(), threads.data(), threads.size() * sizeof(double)) == 0));
   }
 }
+#endif // CGAL_LINKED_WITH_TBB

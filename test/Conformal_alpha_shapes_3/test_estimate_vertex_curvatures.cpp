@@ -16,11 +16,17 @@
 #include <boost/mpl/list.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <thread>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -89,6 +95,17 @@ const CAS3::Curvature_estimator all_estimators[] = {CAS3::PAPER_EULER_FIT, CAS3:
                                                     CAS3::QUADRIC_FIT};
 const char* estimator_name[] = {"paper", "euler-ls", "quadric"};
 
+// The bound of a relative error of H (or of k1, k2) on clean meshes: the
+// manual's figures ("Measured Accuracy"), with a stated margin. The quadric
+// fit 0.77% (0.3-0.7% at 1 ring, the upper end, 10% above); Euler least
+// squares 2.2% (1.98% at its best ring on the ellipsoid, 10% above); the
+// paper's fit, biased by about 11% on H, 13%. K, a product of two
+// curvatures, errs about twice as much: twice the bound.
+double h_bound(CAS3::Curvature_estimator e)
+{
+  return e == CAS3::QUADRIC_FIT ? 0.0077 : e == CAS3::PAPER_EULER_FIT ? 0.13 : 0.022;
+}
+
 // Median relative errors of H and K against a sphere of radius r, every
 // normal outward, k1 >= k2, directions tangent and orthogonal.
 template <class Mesh>
@@ -112,9 +129,13 @@ std::pair<double, double> sphere_errors(const Mesh& mesh, double r, int rings, C
 
 } // namespace
 
-// Bounds: median relative errors that a correct implementation of each
-// estimator meets with margin (measured values are in the manual); a wrong
-// sign, a factor 2 or a wrong frame fails them by far.
+// Bounds: h_bound() on H, twice that on K (the quadric fit: 1.2% on K, the
+// upper end of its 0.7-1.1%, 10% above), at 1 and 2 rings (Euler least
+// squares, whose best ring is 3 to 4, at 2). A wrong sign, a factor 2 or a
+// wrong frame fails them by far. (Measured at
+// scale 1 on the irregular sphere, 1 ring / 2 rings: quadric H 0.017% /
+// 0.021%, K 0.034% / 0.043%; Euler least squares 5.5% / 1.98%, K 9.7% /
+// 3.8%; the paper's 11.8% / 12.5%, K 16.3% / 18.6%.)
 BOOST_AUTO_TEST_CASE_TEMPLATE(sphere_meshes, Mesh, Mesh_types)
 {
   for(double scale : {1e-3, 1.0, 1e3})
@@ -130,18 +151,47 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(sphere_meshes, Mesh, Mesh_types)
         BOOST_TEST_MESSAGE("sphere scale " << scale << " rings " << rings << " " << estimator_name[e]
                            << ": icosphere H " << ico_err.first << " K " << ico_err.second
                            << " | irregular H " << irr_err.first << " K " << irr_err.second);
-        BOOST_TEST_INFO("scale " << scale << " rings " << rings << " estimator " << estimator_name[e]);
-        // the paper's fit keeps a bias of about 12% in H on irregular meshes
-        const double h_bound = e == CAS3::QUADRIC_FIT ? 0.01 : e == CAS3::PAPER_EULER_FIT ? 0.2 : 0.05;
-        const double k_bound = e == CAS3::QUADRIC_FIT ? 0.02 : e == CAS3::PAPER_EULER_FIT ? 0.35 : 0.1;
-        BOOST_TEST(ico_err.first < h_bound);
-        BOOST_TEST(ico_err.second < k_bound);
-        if(rings == 2)
+        BOOST_TEST_CONTEXT("scale " << scale << " rings " << rings << " estimator " << estimator_name[e])
         {
-          BOOST_TEST(irr_err.first < h_bound);
-          BOOST_TEST(irr_err.second < k_bound);
+          const double k_bound = e == CAS3::QUADRIC_FIT ? 0.012 : 2 * h_bound(e);
+          BOOST_TEST(ico_err.first < h_bound(e));
+          BOOST_TEST(ico_err.second < k_bound);
+          // Euler least squares needs more than one ring of an irregular mesh
+          if(rings == 2 || e != CAS3::EULER_LEAST_SQUARES_FIT)
+          {
+            BOOST_TEST(irr_err.first < h_bound(e));
+            BOOST_TEST(irr_err.second < k_bound);
+          }
         }
       }
+  }
+}
+
+// The manual's "Measured Accuracy" table (benchmark_curvature), clean
+// rows: each estimator at its best ring on an irregular ellipsoid
+// 1 : 0.8 : 0.5 of 5,000 vertices and a jittered torus 1 : 0.35 of 9,600;
+// the documented median errors of H and K, 10% above.
+BOOST_AUTO_TEST_CASE(documented_accuracy_on_clean_irregular_meshes)
+{
+  typedef cas3_test::Mesh_with_truth<Surface_mesh, Vector> Truth;
+  const Truth surfaces[] = {cas3_test::irregular_ellipsoid_with_truth<Surface_mesh, Point, Vector>(5000, 1.0, 0.8, 0.5),
+                            cas3_test::jittered_torus_with_truth<Surface_mesh, Point, Vector>(160, 60, 1.0, 0.35)};
+  struct Row { std::size_t surface; CAS3::Curvature_estimator estimator; int rings; double H, K; };
+  const Row rows[] = {{0, CAS3::PAPER_EULER_FIT, 2, 0.1130, 0.1126}, {0, CAS3::EULER_LEAST_SQUARES_FIT, 3, 0.0198, 0.0342},
+                      {0, CAS3::QUADRIC_FIT, 1, 0.0070, 0.0113},     {1, CAS3::PAPER_EULER_FIT, 3, 0.0620, 0.0973},
+                      {1, CAS3::EULER_LEAST_SQUARES_FIT, 4, 0.0098, 0.0253}, {1, CAS3::QUADRIC_FIT, 1, 0.0027, 0.0066}};
+  for(const Row& row : rows)
+  {
+    const Truth& s = surfaces[row.surface];
+    const Estimate<Surface_mesh> est(s.mesh, row.rings, row.estimator);
+    const cas3_test::Curvature_errors e = cas3_test::curvature_errors(s, est.H, est.K);
+    BOOST_TEST_MESSAGE(s.name << ", " << estimator_name[row.estimator] << ", " << row.rings << " rings: H "
+                       << 100 * e.h50 << "%, K " << 100 * e.k50 << "%");
+    BOOST_TEST_CONTEXT(s.name << ", " << estimator_name[row.estimator] << ", " << row.rings << " rings")
+    {
+      BOOST_TEST(e.h50 <= 1.1 * row.H);
+      BOOST_TEST(e.k50 <= 1.1 * row.K);
+    }
   }
 }
 
@@ -167,12 +217,18 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(cylinder_mesh, Mesh, Mesh_types)
         axis_max.push_back(std::abs(est.principal[i].max_direction.z()));
         axis_min.push_back(std::abs(est.principal[i].min_direction.z()));
       }
-      BOOST_TEST_INFO("scale " << scale << " estimator " << estimator_name[e]);
-      // a 2-ring on 64 samples around the axis: the quadric's bias is about 1%
-      BOOST_TEST(quantile(eh, 0.5) < (e == CAS3::QUADRIC_FIT ? 0.02 : 0.1));
-      BOOST_TEST(quantile(ek, 0.5) < (e == CAS3::QUADRIC_FIT ? 0.02 : 0.1));
-      BOOST_TEST(quantile(axis_max, 0.9) < 0.2);   // max curvature goes around the axis
-      BOOST_TEST(quantile(axis_min, 0.1) > 0.97);  // min curvature along it
+      BOOST_TEST_CONTEXT("scale " << scale << " estimator " << estimator_name[e])
+      {
+        // the quadric fit's fourth-order correction is exact on a cylinder
+        // (the manual): 0.1% (measured 0.015% on H, 0.001% on K; without
+        // the correction a 2-ring here reads H several percent high); the
+        // others at their documented accuracy (h_bound())
+        const double bound = e == CAS3::QUADRIC_FIT ? 0.001 : h_bound(e);
+        BOOST_TEST(quantile(eh, 0.5) < bound);
+        BOOST_TEST(quantile(ek, 0.5) < 2 * bound);
+        BOOST_TEST(quantile(axis_max, 0.9) < 0.2);   // max curvature goes around the axis
+        BOOST_TEST(quantile(axis_min, 0.1) > 0.97);  // min curvature along it
+      }
     }
   }
 }
@@ -203,11 +259,15 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(torus_mesh, Mesh, Mesh_types)
         e2.push_back(std::abs(est.principal[i].min_curvature * scale - k2) * r);
         eh.push_back(std::abs(est.H[i] * scale - (k1 + k2) / 2) * r);
       }
-      BOOST_TEST_INFO("scale " << scale << " estimator " << estimator_name[e]);
-      const double bound = e == CAS3::QUADRIC_FIT ? 0.02 : 0.1;  // relative to 1/r
-      BOOST_TEST(quantile(e1, 0.5) < bound);
-      BOOST_TEST(quantile(e2, 0.5) < bound);
-      BOOST_TEST(quantile(eh, 0.5) < bound);
+      // relative to 1/r, at the documented accuracy (measured at 2 rings:
+      // the quadric 0.16%, 0.19%, 0.15% on k1, k2, H; Euler least squares
+      // 1.1%, 0.66%, 0.61%; the paper's 7.5%, 2.2%, 2.7%)
+      BOOST_TEST_CONTEXT("scale " << scale << " estimator " << estimator_name[e])
+      {
+        BOOST_TEST(quantile(e1, 0.5) < h_bound(e));
+        BOOST_TEST(quantile(e2, 0.5) < h_bound(e));
+        BOOST_TEST(quantile(eh, 0.5) < h_bound(e));
+      }
     }
   }
 }
@@ -230,13 +290,17 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(saddle_mesh, Mesh, Mesh_types)
         if((est.points[i] - CGAL::ORIGIN).squared_length() <
            (est.points[center] - CGAL::ORIGIN).squared_length())
           center = i;
-      BOOST_TEST_INFO("scale " << scale << " estimator " << estimator_name[e]);
-      const double tol = e == CAS3::QUADRIC_FIT ? 0.05 : 0.3;
-      BOOST_TEST(est.K[center] * scale * scale < 0);
-      BOOST_TEST(std::abs(est.K[center] * scale * scale + 4) < 4 * tol);
-      BOOST_TEST(std::abs(est.H[center] * scale) < 2 * tol);
-      BOOST_TEST(std::abs(est.principal[center].max_direction.y()) > 0.9);
-      BOOST_TEST(est.normals[center].z() > 0.99);
+      // at the documented accuracy: H relative to |k1| = 2, K twice that
+      // (measured: the quadric K -3.978, H 2e-5; Euler least squares
+      // -3.945, -0.0025; the paper's -4.377, 0.046)
+      BOOST_TEST_CONTEXT("scale " << scale << " estimator " << estimator_name[e])
+      {
+        BOOST_TEST(est.K[center] * scale * scale < 0);
+        BOOST_TEST(std::abs(est.K[center] * scale * scale + 4) < 4 * 2 * h_bound(e));
+        BOOST_TEST(std::abs(est.H[center] * scale) < 2 * h_bound(e));
+        BOOST_TEST(std::abs(est.principal[center].max_direction.y()) > 0.9);
+        BOOST_TEST(est.normals[center].z() > 0.99);
+      }
     }
   }
 }
@@ -379,26 +443,94 @@ Surface_mesh rough_sphere(std::size_t n)
 
 } // namespace
 
-// The parallel run (TBB's threads when CGAL_LINKED_WITH_TBB, else serial)
-// gives the same bits as the serial run, for every kind of neighborhood.
+#ifdef CGAL_LINKED_WITH_TBB
+// Tests of the parallel path: built only with TBB (without it, the
+// "parallel" run would be the serial run compared with itself); CI's Release
+// build requires TBB (CAS3_REQUIRE_TBB).
+
+// The parallel run (TBB's threads) gives the same bits as the serial run,
+// for every kind of neighborhood.
 BOOST_AUTO_TEST_CASE(parallel_run_matches_the_serial_run_bit_for_bit)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  BOOST_TEST_MESSAGE("TBB: the parallel run uses threads");
-#else
-  BOOST_TEST_MESSAGE("no TBB: both runs are serial");
-#endif
   const Surface_mesh mesh = rough_sphere(6000);
   const std::vector<double> radii = {0.04, 0.06, 0.08, 0.12, 0.16};
   auto check = [&](const auto& np) {
     const std::vector<double> serial = all_outputs<CGAL::Sequential_tag>(mesh, np);
-    BOOST_TEST(same_bits(serial, all_outputs<CGAL::Parallel_if_available_tag>(mesh, np)));
+    BOOST_TEST(same_bits(serial, all_outputs<CGAL::Parallel_tag>(mesh, np)));
     BOOST_TEST(std::count_if(serial.begin(), serial.end(), [](double x) { return std::isfinite(x); }) > 0);
   };
   check(CAS3::parameters::ring_size(2));
   check(CAS3::parameters::neighborhood_radius(0.08));
   check(CAS3::parameters::neighborhood_radii(radii));
 }
+
+namespace {
+
+// A vertex point map that records the threads reading it once it has been
+// read `serial_reads` times (the positions are first copied serially, one
+// read per vertex); from then on, the first read of each thread waits (up
+// to 20 s) until a second thread reads too, so that a parallel loop over
+// the vertices shows two threads even on a busy machine, and a serial one
+// shows one, after the wait.
+struct Thread_recording_point_map
+{
+  typedef Surface_mesh::Vertex_index key_type;
+  typedef Point value_type;
+  typedef const Point& reference;
+  typedef boost::readable_property_map_tag category;
+
+  const Surface_mesh* mesh;
+  std::size_t serial_reads;
+  std::shared_ptr<std::atomic<std::size_t> > reads = std::make_shared<std::atomic<std::size_t> >(0);
+  std::shared_ptr<std::mutex> mutex = std::make_shared<std::mutex>();
+  std::shared_ptr<std::set<std::thread::id> > threads = std::make_shared<std::set<std::thread::id> >();
+
+  std::size_t number_of_threads() const
+  {
+    std::lock_guard<std::mutex> lock(*mutex);
+    return threads->size();
+  }
+  friend reference get(const Thread_recording_point_map& map, key_type v)
+  {
+    if(++*map.reads > map.serial_reads)
+    {
+      bool first;
+      {
+        std::lock_guard<std::mutex> lock(*map.mutex);
+        first = map.threads->insert(std::this_thread::get_id()).second;
+      }
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while(first && map.number_of_threads() < 2 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::yield();
+    }
+    return map.mesh->point(v);
+  }
+};
+
+} // namespace
+
+// estimate_vertex_curvatures<CGAL::Parallel_tag> runs on several threads
+// (the vertex point map is read in the parallel loops), with the serial
+// run's results.
+BOOST_AUTO_TEST_CASE(parallel_tag_runs_on_several_threads)
+{
+  const Surface_mesh mesh = rough_sphere(3000);
+  const Thread_recording_point_map points{&mesh, mesh.number_of_vertices()};
+  auto h_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  CAS3::estimate_vertex_curvatures<CGAL::Parallel_tag>(mesh,
+    CAS3::parameters::vertex_mean_curvature_map(h_map, CAS3::parameters::ring_size(2)).vertex_point_map(points));
+  BOOST_TEST_MESSAGE("threads that read the points: " << points.number_of_threads());
+  BOOST_TEST(points.number_of_threads() >= 2u);
+  const std::vector<double> serial = all_outputs<CGAL::Sequential_tag>(mesh, CAS3::parameters::ring_size(2));
+  std::size_t differing = 0, i = 0;
+  for(auto v : mesh.vertices())
+  {
+    differing += std::memcmp(&serial[14 * i + 9], &get(h_map, v), sizeof(double)) == 0 ? 0 : 1;
+    ++i;
+  }
+  BOOST_TEST(differing == 0u);
+}
+#endif // CGAL_LINKED_WITH_TBB
 
 // The estimate at one vertex is the one the whole mesh gets, with a radius
 // and with candidate radii (the one-vertex search sees only the part of the
@@ -465,9 +597,8 @@ BOOST_AUTO_TEST_CASE(large_radii_from_centers_follow_the_own_fits)
   BOOST_TEST(quantile(to_own, 0.5) < 0.01);
   BOOST_TEST(quantile(to_own, 0.9) < 0.03);
   BOOST_TEST(quantile(to_truth, 0.5) < 1.2 * quantile(own_to_truth, 0.5) + 0.002);
-#ifdef CGAL_LINKED_WITH_TBB  // without TBB both runs are one serial path (and the sanitizer build's longest)
-  BOOST_TEST(same_bits(all_outputs<CGAL::Sequential_tag>(mesh, np),
-                       all_outputs<CGAL::Parallel_if_available_tag>(mesh, np)));
+#ifdef CGAL_LINKED_WITH_TBB  // without TBB there is no parallel path to compare
+  BOOST_TEST(same_bits(all_outputs<CGAL::Sequential_tag>(mesh, np), all_outputs<CGAL::Parallel_tag>(mesh, np)));
 #endif
 }
 

@@ -1,7 +1,7 @@
 // Tests of the surfaces: extract_surface and suggest_scale (one oriented
 // sheet per part of the sampled surface, on clean, noisy and open samples,
-// following input normals), the noise estimate; extract_boundary_surface and
-// suggest_alpha (closed oriented manifolds of the right genus and volume on
+// following input normals), the noise estimate; the solid boundary (extract_surface with SOLID_BOUNDARY) and
+// its suggest_scale (closed oriented manifolds of the right genus and volume on
 // analytic samples, the share of points on the surface on noisy samples and
 // real scans, the paper's central claim against every global alpha), and
 // bad input.
@@ -25,6 +25,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include "cas3_analytic_surfaces.h"
+#include "cas3_test_data.h"
 #include "cas3_test_shapes.h"
 
 #include <boost/mpl/list.hpp>
@@ -33,11 +34,14 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <numeric>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -63,6 +67,7 @@ struct Surface_facts
   long euler = 0;
   double volume = 0;
   bool valid_closed_triangle_mesh = false;
+  std::set<std::array<std::size_t, 3> > faces;  // by the sorted input indices of their vertices
 };
 
 template <class Mesh>
@@ -83,6 +88,15 @@ Surface_facts extract(const Cas& cas, double alpha, const std::vector<Point>& pt
   BOOST_TEST(wrong_index == 0u);
   facts.valid_closed_triangle_mesh =
     CGAL::is_valid_polygon_mesh(mesh) && CGAL::is_closed(mesh) && CGAL::is_triangle_mesh(mesh);
+  for(auto f : faces(mesh))
+  {
+    std::array<std::size_t, 3> triangle;
+    std::size_t k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      triangle[k++ % 3] = get(input_index, v);
+    std::sort(triangle.begin(), triangle.end());
+    facts.faces.insert(triangle);
+  }
   if(num_faces(mesh) > 0)
   {
     auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
@@ -93,12 +107,6 @@ Surface_facts extract(const Cas& cas, double alpha, const std::vector<Point>& pt
   return facts;
 }
 
-std::vector<Point> read(const std::string& file)
-{
-  std::vector<Point> pts;
-  BOOST_REQUIRE(CGAL::IO::read_points(file, std::back_inserter(pts)));
-  return pts;
-}
 
 // Under the sanitizers (several times slower), most solid-boundary tests run
 // on smaller samples: the same properties, a third of the work.
@@ -107,11 +115,6 @@ const std::size_t closed_points = 8000, noisy_points = 15000;
 #else
 const std::size_t closed_points = 20000, noisy_points = 50000;
 #endif
-
-bool shared_data_available()
-{
-  return bool(std::ifstream(std::string(CAS3_SHARED_DATA) + "/kitten.xyz"));
-}
 
 } // namespace
 
@@ -259,26 +262,35 @@ BOOST_AUTO_TEST_CASE(conformal_scales_succeed_where_every_global_alpha_fails)
   BOOST_TEST(tori == 0u);
 }
 
+// Real scans (libcgal-demo's, and the bundled bunny) at the suggested scale:
+// the shares of points on the surface of the manual's table ("Measured",
+// solid boundary; 0.5 point of margin) on a closed surface of the right
+// genus where the scan is closed.
 BOOST_AUTO_TEST_CASE(real_scans)
 {
-  if(!shared_data_available())
+  struct Case { std::string file; double share; long euler; };
+  const Case cases[] = {{cas3_test::test_data_file("kitten.xyz"), 1.0, 0},  // genus 1 (the tail)
+                        {cas3_test::test_data_file("bunny00.off"), 1.0, 2},
+                        {CAS3_BUNNY_XYZ, 0.975, 0},
+                        {cas3_test::test_data_file("bunny_1000.xyz"), 0.985, 0}};
+  for(const Case& k : cases)
   {
-    BOOST_TEST_MESSAGE("../shared/data not found: real scans skipped");
-    return;
-  }
-  struct Case { const char* file; double share; };
-  for(const Case& k : {Case{"/kitten.xyz", 0.99}, Case{"/bunny00.off", 0.99}, Case{"/bunny_5000.xyz", 0.9},
-                       Case{"/bunny_1000.xyz", 0.9}})
-  {
-    const auto pts = read(std::string(CAS3_SHARED_DATA) + k.file);
+    const auto pts = cas3_test::read_points<Point>(k.file);
     const Cas cas(pts.begin(), pts.end());
     const Surface_facts s = extract<Polyhedron>(cas, CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), pts);
     BOOST_TEST_MESSAGE(k.file << ": " << s.report.fraction_of_points_on_surface() << " of the points on the surface, "
-                       << s.components << " components");
-    BOOST_TEST_INFO(k.file);
-    BOOST_TEST(s.valid_closed_triangle_mesh);
-    BOOST_TEST(s.volume > 0);
-    BOOST_TEST(s.report.fraction_of_points_on_surface() >= k.share);
+                       << s.components << " components, Euler characteristic " << s.euler);
+    BOOST_TEST_CONTEXT(k.file)
+    {
+      BOOST_TEST(s.valid_closed_triangle_mesh);
+      BOOST_TEST(s.volume > 0);
+      BOOST_TEST(s.report.fraction_of_points_on_surface() >= k.share - 0.005);
+      if(k.share == 1.0)
+      {
+        BOOST_TEST(s.components == 1u);
+        BOOST_TEST(s.euler == k.euler);
+      }
+    }
   }
 }
 
@@ -287,16 +299,34 @@ BOOST_AUTO_TEST_CASE(real_scans)
 // closed oriented manifold mesh.
 BOOST_AUTO_TEST_CASE_TEMPLATE(every_scale_gives_a_manifold, Mesh, Mesh_types)
 {
-  const auto pts = read(CAS3_BUNNY_XYZ);
+  const auto pts = cas3_test::read_points<Point>(CAS3_BUNNY_XYZ);
   const Cas cas(pts.begin(), pts.end());
   std::size_t pinched = 0;
   for(double q = 0.0; q <= 1.0; q += 0.05)
   {
     const double alpha = cas.alpha_at_quantile(q);
     const Surface_facts s = extract<Mesh>(cas, alpha, pts);
-    BOOST_TEST_INFO("quantile " << q);
-    BOOST_TEST(s.valid_closed_triangle_mesh);
-    BOOST_TEST(s.report.number_of_dropped_facets <= s.report.number_of_candidate_facets);
+    // the report's candidates are the facets REGULAR or SINGULAR at alpha,
+    // and those dropped the candidates that are not faces of the mesh
+    std::size_t candidates = 0, kept = 0;
+    for(const Cas::Facet& f : cas.finite_facets())
+    {
+      const Cas::Classification_type c = cas.classify(f, alpha);
+      if(c != Cas::REGULAR && c != Cas::SINGULAR)
+        continue;
+      ++candidates;
+      std::array<std::size_t, 3> triangle;
+      for(int k = 0; k < 3; ++k)
+        triangle[std::size_t(k)] = *cas.input_indices(f.first->vertex((f.second + 1 + k) & 3)).begin();
+      std::sort(triangle.begin(), triangle.end());
+      kept += s.faces.count(triangle);
+    }
+    BOOST_TEST_CONTEXT("quantile " << q)
+    {
+      BOOST_TEST(s.valid_closed_triangle_mesh);
+      BOOST_TEST(s.report.number_of_candidate_facets == candidates);
+      BOOST_TEST(s.report.number_of_dropped_facets == candidates - kept);
+    }
     pinched += s.report.number_of_pinched_vertices;
   }
   BOOST_TEST(pinched > 0u);  // the pockets below the closing scale were split
@@ -359,22 +389,49 @@ struct Sheet_facts
 {
   CAS3::Surface_report report;
   double coverage = 0;     // share of points with a normal
-  double agreement = 0;    // share of those whose normal agrees with `truth`
+  double agreement = 0;    // share of the surface's vertices whose normal agrees with `truth`
+  std::vector<Point> vertex_points;  // the surface's vertices
+  std::vector<bool> vertex_agrees;   // whether each one's normal agrees with `truth`
+  // six times the signed volume of the cone that the surface spans from the
+  // center of its vertices: the orientation rule without reference normals
+  // (the manual, "Orientation"; extract_surface()) makes it positive for a
+  // closed sheet, an open sheet, or open sheets joined across gaps
+  double cone = 0;
+
+  // the share of the vertices in a region whose normal agrees with `truth`
+  template <class Region>
+  double agreement_in(const Region& region) const
+  {
+    std::size_t in = 0, agree = 0;
+    for(std::size_t k = 0; k < vertex_points.size(); ++k)
+      if(region(vertex_points[k]))
+      {
+        ++in;
+        agree += vertex_agrees[k] ? 1 : 0;
+      }
+    BOOST_REQUIRE(in > 0u);
+    return double(agree) / double(in);
+  }
 };
 
-// The points and normals of a file of the shared data (six columns).
-void read_shared_oriented_points(const std::string& name, std::vector<Point>& points, std::vector<Vector>& normals)
+// Six times the signed volume of the cone that `mesh`'s faces span from the
+// center (the mean) of its vertices.
+template <class Mesh>
+double cone_from_the_center(const Mesh& mesh)
 {
-  typedef std::pair<Point, Vector> Point_and_normal;
-  std::vector<Point_and_normal> read;
-  BOOST_REQUIRE(CGAL::IO::read_points(std::string(CAS3_SHARED_DATA) + "/" + name, std::back_inserter(read),
-                                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Point_and_normal>())
-                                        .normal_map(CGAL::Second_of_pair_property_map<Point_and_normal>())));
-  for(const Point_and_normal& pn : read)
+  Vector center(0, 0, 0);
+  for(auto v : vertices(mesh))
+    center = center + (get(CGAL::vertex_point, mesh, v) - CGAL::ORIGIN);
+  center = center / double(num_vertices(mesh));
+  double cone = 0;
+  for(auto f : faces(mesh))
   {
-    points.push_back(pn.first);
-    normals.push_back(pn.second);
+    std::vector<Vector> p;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      p.push_back(get(CGAL::vertex_point, mesh, v) - CGAL::ORIGIN - center);
+    cone += CGAL::cross_product(p[1] - p[0], p[2] - p[0]) * p[0];
   }
+  return cone;
 }
 
 Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vector>& truth,
@@ -397,11 +454,18 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
   auto normal = surface.property_map<Analysis::Surface_vertex, Vector>("v:normal").first;
   std::size_t agree = 0;
   for(Analysis::Surface_vertex v : surface.vertices())
-    agree += normal[v] * truth[index[v]] > 0 ? 1 : 0;
+  {
+    facts.vertex_points.push_back(surface.point(v));
+    facts.vertex_agrees.push_back(normal[v] * truth[index[v]] > 0);
+    agree += facts.vertex_agrees.back() ? 1 : 0;
+  }
   facts.agreement = surface.number_of_vertices() == 0 ? 0 : double(agree) / double(surface.number_of_vertices());
+  if(surface.number_of_vertices() > 0)
+    facts.cone = cone_from_the_center(surface);
   BOOST_TEST_MESSAGE("noise " << analysis.noise().noise << ", smoothing passes " << analysis.denoising().passes
                      << ", parts " << facts.report.number_of_parts << " (" << facts.report.number_of_closed_parts
-                     << " closed), coverage " << facts.coverage << ", agreement " << facts.agreement);
+                     << " closed), coverage " << facts.coverage << ", agreement " << facts.agreement << ", cone "
+                     << facts.cone);
   return facts;
 }
 
@@ -661,14 +725,16 @@ BOOST_AUTO_TEST_CASE(noisy_closed_surface_is_one_outward_sheet)
     {
       const Sheet_facts facts = sheet_facts(s.points, s.normals);
       BOOST_TEST(facts.coverage >= 0.98);
-      BOOST_TEST(facts.agreement >= 0.99);
+      BOOST_TEST(facts.agreement >= 0.99);  // outward
+      BOOST_TEST(facts.cone > 0);
     }
   }
 }
 
 // A single view of a surface (a cap), clean and noisy: one consistently
-// oriented sheet with a border, not a two-sided slab.
-BOOST_AUTO_TEST_CASE(open_cap_is_one_consistent_sheet)
+// oriented sheet with a border, not a two-sided slab, pointing away from
+// the center of its vertices, which lies under the cap: outwards.
+BOOST_AUTO_TEST_CASE(open_cap_is_one_sheet_pointing_away_from_the_center)
 {
   for(double noise : {0.0, 0.1})
   {
@@ -679,7 +745,8 @@ BOOST_AUTO_TEST_CASE(open_cap_is_one_consistent_sheet)
       const Sheet_facts facts = sheet_facts(s.points, s.normals);
       BOOST_TEST(facts.report.number_of_open_parts() >= 1u);
       BOOST_TEST(facts.coverage >= 0.97);
-      BOOST_TEST((std::max)(facts.agreement, 1 - facts.agreement) >= 0.99);
+      BOOST_TEST(facts.agreement >= 0.99);
+      BOOST_TEST(facts.cone > 0);
     }
   }
 }
@@ -709,7 +776,15 @@ BOOST_AUTO_TEST_CASE(open_sheets_across_a_gap_agree)
   const Sheet_facts facts = sheet_facts(points, normals);
   BOOST_TEST(facts.report.number_of_open_parts() >= 2u);  // the gap is not bridged: two sheets to orient
   BOOST_TEST(facts.coverage >= 0.99);
-  BOOST_TEST((std::max)(facts.agreement, 1 - facts.agreement) >= 0.99);
+  // the floors face alike (both up, or both down)...
+  const double lower = facts.agreement_in([](const Point& p) { return p.x() < 0; });
+  const double upper = facts.agreement_in([](const Point& p) { return p.x() > 0; });
+  BOOST_TEST_MESSAGE("share of normals up: lower floor " << lower << ", upper floor " << upper);
+  BOOST_TEST(((std::min)(lower, upper) >= 0.99 || (std::max)(lower, upper) <= 0.01));
+  // ...the way their cones from the center, summed, say (nearly balanced
+  // here: the direction of two parallel floors is the rule's, not the
+  // scene's)
+  BOOST_TEST(facts.cone > 0);
 }
 
 // An open sheet that nearly closes round its own center points out of it:
@@ -719,35 +794,122 @@ BOOST_AUTO_TEST_CASE(open_sheets_across_a_gap_agree)
 // with the blob turned out).
 BOOST_AUTO_TEST_CASE(nearly_closed_open_sheets_point_out_of_their_center)
 {
-  if(!shared_data_available())
-    return;
   std::vector<Point> points;
   std::vector<Vector> normals;
-  read_shared_oriented_points("oni.pwn", points, normals);
+  cas3_test::read_oriented_points("oni.pwn", points, normals);
   const Sheet_facts facts = sheet_facts(points, normals);
   BOOST_TEST(!facts.report.oriented_by_reference_normals);
-  BOOST_TEST((std::max)(facts.agreement, 1 - facts.agreement) >= 0.98);
+  BOOST_TEST(facts.agreement >= 0.98);
 }
 
-// Given normals decide the orientation, even against the default rule
-// (here: the cap given inward normals; the kitten scan with its own).
+// libcgal-demo's scans at 4 spacings (the manual, "Measured: Scans Without
+// Their Normals" and "Measured: Advancing Front against the Solid
+// Boundary"; evaluate_surfaces --case kitten,oni,ball,building
+// --neighborhoods 4s). Given their normals, the value of every point on
+// the surface is on its normal's side, and the sheets agree with the
+// normals at the share of their vertices the manual gives (kitten 100%,
+// oni 98.0%, ball 99.7%, building 89.9%). As x y z only, the share of the
+// points on the surface whose normal agrees with the file's, without a
+// flip: kitten 100%, oni 98.3%, ball 99.7%, building 85.4%. Bounds half a
+// point below. Under the sanitizers (ten times slower) the two small scans
+// only; ball.ply and building.ply in the Release build.
+BOOST_AUTO_TEST_CASE(real_scans_with_and_without_their_normals)
+{
+  struct Case { const char* file; double sheets_given, points_xyz; };
+  const std::vector<Case> cases = {{"kitten.xyz", 1.0, 1.0}, {"oni.pwn", 0.980, 0.983}
+#ifndef CAS3_SANITIZED
+                                   , {"ball.ply", 0.997, 0.997}, {"building.ply", 0.899, 0.854}
+#endif
+  };
+#ifdef CAS3_SANITIZED
+  BOOST_TEST_MESSAGE("sanitizer build: ball.ply and building.ply are tested in the Release build");
+#endif
+  for(const Case& k : cases)
+  {
+    std::vector<Point> points;
+    std::vector<Vector> normals;
+    cas3_test::read_oriented_points(k.file, points, normals);
+    for(bool given : {true, false})
+    {
+      const Analysis analysis(points.begin(), points.end(),
+                              CAS3::parameters::reference_normals(given ? normals : std::vector<Vector>()));
+      Analysis::Surface surface;
+      const CAS3::Surface_report report = analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+      const auto values = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::spacings(4)}).front();
+      std::size_t covered = 0, agree = 0;
+      for(std::size_t i = 0; i < points.size(); ++i)
+        if(values[i].on_surface())
+        {
+          ++covered;
+          agree += values[i].normal * normals[i] > 0 ? 1 : 0;
+        }
+      auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
+      auto normal = surface.property_map<Analysis::Surface_vertex, Vector>("v:normal").first;
+      std::size_t sheets_agree = 0;
+      for(Analysis::Surface_vertex v : surface.vertices())
+        sheets_agree += normal[v] * normals[index[v]] > 0 ? 1 : 0;
+      const double points_share = double(agree) / double(covered);
+      const double sheets_share = double(sheets_agree) / double(surface.number_of_vertices());
+      BOOST_TEST_MESSAGE(k.file << (given ? " given its normals" : " as x y z only") << ": " << report.number_of_parts
+                         << " sheets, " << covered << " of " << points.size() << " points on the surface, "
+                         << 100 * points_share << "% of them and " << 100 * sheets_share
+                         << "% of the sheets' vertices agree with the file's normals");
+      BOOST_TEST_CONTEXT(k.file << (given ? " given its normals" : " as x y z only"))
+      {
+        BOOST_TEST(report.oriented_by_reference_normals == given);
+        BOOST_TEST(double(covered) >= 0.99 * double(points.size()));
+        if(given)
+        {
+          BOOST_TEST(agree == covered);
+          BOOST_TEST(sheets_share >= k.sheets_given - 0.005);
+        }
+        else
+          BOOST_TEST(points_share >= k.points_xyz - 0.005);
+      }
+    }
+  }
+}
+
+// Given normals decide the orientation, against the default rule: a noisy
+// cap and a noisy closed ellipsoid given inward normals face inwards (the
+// default points both outwards), and so do the values of every point (the
+// mean curvature of a convex surface seen from inside is negative); the
+// kitten scan follows its own normals.
 BOOST_AUTO_TEST_CASE(orientation_follows_input_normals)
 {
-  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(sheet_points, 1.0, 0.7, 0.4, 0.1);
-  cas3_analytic::add_normal_noise(s, 0.1, 9);
-  std::vector<Vector> inward;
-  for(const Vector& n : s.normals)
-    inward.push_back(-n);
-  const Sheet_facts facts = sheet_facts(s.points, inward, inward);
-  BOOST_TEST(facts.report.oriented_by_reference_normals);
-  BOOST_TEST(facts.agreement >= 0.99);
+  for(double z_min : {0.1, -1.0})
+  {
+    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(sheet_points, 1.0, 0.7, 0.4,
+                                                                    z_min > -1 ? z_min : -INFINITY);
+    cas3_analytic::add_normal_noise(s, 0.1, 9);
+    std::vector<Vector> inward;
+    for(const Vector& n : s.normals)
+      inward.push_back(-n);
+    BOOST_TEST_CONTEXT((z_min > -1 ? "cap" : "closed ellipsoid"))
+    {
+      const Sheet_facts facts = sheet_facts(s.points, inward, inward);
+      BOOST_TEST(facts.report.oriented_by_reference_normals);
+      BOOST_TEST(facts.agreement >= 0.99);
+      const Analysis analysis(s.points.begin(), s.points.end(), CAS3::parameters::reference_normals(inward));
+      Analysis::Surface surface;
+      analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+      const auto values = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::spacings(8)}).front();
+      std::size_t covered = 0, inwards = 0;
+      for(std::size_t i = 0; i < values.size(); ++i)
+        if(values[i].on_surface())
+        {
+          ++covered;
+          inwards += values[i].normal * inward[i] > 0 && values[i].mean_curvature < 0 ? 1 : 0;
+        }
+      BOOST_TEST(double(inwards) >= 0.99 * double(covered));
+    }
+  }
 
-  if(!shared_data_available())
-    return;
   std::vector<Point> points;
   std::vector<Vector> normals;
-  read_shared_oriented_points("kitten.xyz", points, normals);
+  cas3_test::read_oriented_points("kitten.xyz", points, normals);
   const Sheet_facts scan = sheet_facts(points, normals, normals);
+  BOOST_TEST(scan.report.oriented_by_reference_normals);
   BOOST_TEST(scan.coverage >= 0.97);
   BOOST_TEST(scan.agreement >= 0.97);
 }
@@ -1051,6 +1213,63 @@ BOOST_AUTO_TEST_CASE(any_order_of_the_points_gives_the_same_results)
     for(std::size_t k = 0; k < permutation.size(); ++k)
       differing += same_bits(layers[l][permutation[k]], layers_shuffled[l][k]) ? 0 : 1;
     BOOST_TEST_CONTEXT("neighborhood " << l) { BOOST_TEST(differing == 0u); }
+  }
+}
+
+namespace {
+
+// Shuffles the heap's free memory: blocks of the small sizes the front
+// allocates, allocated, then two thirds of them freed in a random order
+// (the rest is returned, to be freed after the run that follows).
+std::vector<void*> scramble_the_heap(unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::vector<void*> blocks, kept;
+  for(std::size_t size = 16; size <= 256; size += 8)
+    for(int i = 0; i < 4000; ++i)
+      blocks.push_back(std::malloc(size));
+  std::shuffle(blocks.begin(), blocks.end(), random);
+  for(std::size_t i = 0; i < blocks.size(); ++i)
+    if(i % 3 == 0)
+      kept.push_back(blocks[i]);
+    else
+      std::free(blocks[i]);
+  return kept;
+}
+
+} // namespace
+
+// The results do not depend on the heap layout for points in general
+// position. CGAL's advancing front orders its candidates of equal priority
+// by memory address; its ties between different facets (the manual, "The
+// Program": exact ties of fold angles or of values, as on lattices) are
+// the exception. On a noisy torus the same bits come out after the heap's
+// free memory was shuffled, three ways.
+BOOST_AUTO_TEST_CASE(the_heap_layout_does_not_change_the_results)
+{
+  Sample s = cas3_analytic::torus_truth_sample<Point, Vector>(sheet_points / 2, 1.0, 0.35);
+  cas3_analytic::add_normal_noise(s, 0.1, 5);
+  const std::vector<CAS3::Neighborhood> neighborhoods{CAS3::Neighborhood::rings(2), CAS3::Neighborhood::automatic()};
+  auto run = [&]() {
+    const Analysis analysis(s.points.begin(), s.points.end());
+    Analysis::Surface surface;
+    analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+    return analysis.estimate_curvatures(surface, neighborhoods);
+  };
+  const auto reference = run();
+  for(unsigned seed : {1u, 2u, 3u})
+  {
+    const std::vector<void*> kept = scramble_the_heap(seed);
+    const auto layers = run();
+    for(void* block : kept)
+      std::free(block);
+    for(std::size_t l = 0; l < neighborhoods.size(); ++l)
+    {
+      std::size_t differing = 0;
+      for(std::size_t i = 0; i < s.points.size(); ++i)
+        differing += same_bits(reference[l][i], layers[l][i]) ? 0 : 1;
+      BOOST_TEST_CONTEXT("heap shuffled with seed " << seed << ", neighborhood " << l) { BOOST_TEST(differing == 0u); }
+    }
   }
 }
 

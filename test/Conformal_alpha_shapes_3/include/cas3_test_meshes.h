@@ -5,12 +5,14 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <map>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -111,6 +113,88 @@ void parametric_grid(std::size_t nu, std::size_t nv, bool closed_u, bool closed_
       else                 { faces.push_back({a, b, e}); faces.push_back({b, c, e}); }
     }
   soup_to_mesh(pts, faces, mesh);
+}
+
+// A mesh of an analytic surface with the exact outward normal, H and K at
+// each vertex, in vertex order: the meshes of the manual's "Measured
+// Accuracy" table (benchmark_curvature, and a test).
+template <class Mesh, class Vector>
+struct Mesh_with_truth
+{
+  std::string name;
+  Mesh mesh;
+  std::vector<Vector> normal;
+  std::vector<double> H, K;
+};
+
+// The irregular sphere of `n` vertices (`irregular_sphere()`) stretched into
+// the ellipsoid with semi-axes a, b, c.
+template <class Mesh, class Point, class Vector>
+Mesh_with_truth<Mesh, Vector> irregular_ellipsoid_with_truth(std::size_t n, double a, double b, double c)
+{
+  Mesh_with_truth<Mesh, Vector> s;
+  s.name = "ellipsoid " + std::to_string(int(a * 10)) + ":" + std::to_string(int(b * 10)) + ":" +
+           std::to_string(int(c * 10));
+  irregular_sphere<Mesh, Point>(n, 1.0, s.mesh);
+  for(auto v : vertices(s.mesh))
+  {
+    const Point q = get(CGAL::vertex_point, s.mesh, v);
+    const Point p(a * q.x(), b * q.y(), c * q.z());
+    put(CGAL::vertex_point, s.mesh, v, p);
+    const double x = p.x(), y = p.y(), z = p.z();
+    const double h = std::sqrt(x * x / std::pow(a, 4) + y * y / std::pow(b, 4) + z * z / std::pow(c, 4));
+    const double abc2 = a * a * b * b * c * c;
+    s.normal.push_back(Vector(x / (a * a * h), y / (b * b * h), z / (c * c * h)));
+    s.K.push_back(1 / (abc2 * std::pow(h, 4)));
+    s.H.push_back(std::abs(x * x + y * y + z * z - a * a - b * b - c * c) / (2 * abc2 * std::pow(h, 3)));
+  }
+  return s;
+}
+
+// The torus with radii R > r on a `nu` x `nv` grid whose parameters are
+// jittered by 0.3 cells (`parametric_grid()`).
+template <class Mesh, class Point, class Vector>
+Mesh_with_truth<Mesh, Vector> jittered_torus_with_truth(std::size_t nu, std::size_t nv, double R, double r)
+{
+  Mesh_with_truth<Mesh, Vector> s;
+  s.name = "torus 1:0.35";
+  parametric_grid<Mesh, Point>(nu, nv, true, true, 0.3, [&](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+  }, s.mesh);
+  for(auto v : vertices(s.mesh))
+  {
+    const Point p = get(CGAL::vertex_point, s.mesh, v);
+    const double rho = std::sqrt(p.x() * p.x() + p.y() * p.y());
+    const double t = std::atan2(p.z(), rho - R);
+    const double k1 = 1 / r, k2 = std::cos(t) / (R + r * std::cos(t));
+    s.normal.push_back(Vector(std::cos(t) * p.x() / rho, std::cos(t) * p.y() / rho, std::sin(t)));
+    s.H.push_back((k1 + k2) / 2);
+    s.K.push_back(k1 * k2);
+  }
+  return s;
+}
+
+// Median and 90th percentile of the relative errors of H and K (relative to
+// the larger of the value and the surface's largest curvature scale there,
+// so that K near 0 on the torus does not blow up; NaN counts as a huge error).
+struct Curvature_errors { double h50, h90, k50, k90; };
+
+template <class MeshWithTruth>
+Curvature_errors curvature_errors(const MeshWithTruth& s, const std::vector<double>& H, const std::vector<double>& K)
+{
+  std::vector<double> eh, ek;
+  for(std::size_t i = 0; i < H.size(); ++i)
+  {
+    const double kmax = std::abs(s.H[i]) + std::sqrt((std::max)(0.0, s.H[i] * s.H[i] - s.K[i]));
+    eh.push_back(std::isfinite(H[i]) ? std::abs(H[i] - s.H[i]) / (std::max)(std::abs(s.H[i]), 0.5 * kmax) : 1e9);
+    ek.push_back(std::isfinite(K[i]) ? std::abs(K[i] - s.K[i]) / (std::max)(std::abs(s.K[i]), 0.25 * kmax * kmax) : 1e9);
+  }
+  auto quantile = [](std::vector<double> v, double q) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? NAN : v[std::size_t(q * double(v.size() - 1))];
+  };
+  return {quantile(eh, 0.5), quantile(eh, 0.9), quantile(ek, 0.5), quantile(ek, 0.9)};
 }
 
 } // namespace cas3_test
