@@ -82,7 +82,8 @@ bool store_cell_values(const Dt& dt, const std::vector<typename Dt::Cell_handle>
 
   // each cell's values are its own: computed on TBB's threads when
   // available, with the same results
-  centers.assign(cells.size(), Point());
+  centers.clear();
+  centers.resize(cells.size());
   std::atomic<bool> undefined(false);
   for_each_index<Parallel_if_available_tag>(
     cells.size(), []() { return 0; }, [&](std::size_t index, int) {
