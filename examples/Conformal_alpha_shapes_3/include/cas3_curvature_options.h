@@ -129,13 +129,86 @@ void choose(Value& value, const std::string& flag, const std::string& what, cons
 
 } // namespace options_detail
 
+// One reader per option, shared by the command line and the Python module:
+// `name` is the flag or the keyword, and starts every message.
+
+// A list of scales: each one as parse_scale() reads it, above 0.
+inline std::vector<CGAL::Conformal_alpha_shapes_3::Scale> parse_scales(const std::string& name,
+                                                                        const std::vector<std::string>& items)
+{
+  typedef CGAL::Conformal_alpha_shapes_3::Scale Scale;
+  std::vector<Scale> scales;
+  for(const std::string& item : items)
+  {
+    try { scales.push_back(parse_scale(item)); }
+    catch(const std::invalid_argument& e) { throw Option_error(name + ": " + e.what()); }
+    if(scales.back().kind() != Scale::AUTOMATIC && !(scales.back().value() > 0))
+      throw Option_error(name + ": a scale must be above 0 (a value > 0 or a quantile in (0%, 100%]): '" + item
+                         + "'");
+  }
+  return scales;
+}
+
+// A neighborhood radius, as parse_radius() reads it.
+inline CGAL::Conformal_alpha_shapes_3::Neighborhood parse_radius_option(const std::string& name,
+                                                                        const std::string& item)
+{
+  try { return parse_radius(item); }
+  catch(const std::invalid_argument& e) { throw Option_error(name + ": " + e.what()); }
+}
+
+// A ring size from 1 to 100.
+inline CGAL::Conformal_alpha_shapes_3::Neighborhood parse_rings_option(const std::string& name,
+                                                                       const std::string& item)
+{
+  int k = 0;
+  if(!options_detail::whole_number(item, 1, 100, k))
+    throw Option_error(name + ": not a ring size from 1 to 100: '" + item + "'");
+  return CGAL::Conformal_alpha_shapes_3::Neighborhood::rings(k);
+}
+
+inline CGAL::Conformal_alpha_shapes_3::Curvature_estimator parse_estimator(const std::string& name,
+                                                                           const std::string& text)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  CAS3::Curvature_estimator estimator = CAS3::QUADRIC_FIT;
+  options_detail::choose(estimator, name, "estimator", text, {{"quadric", CAS3::QUADRIC_FIT},
+    {"euler-least-squares", CAS3::EULER_LEAST_SQUARES_FIT}, {"paper", CAS3::PAPER_EULER_FIT}});
+  return estimator;
+}
+
+inline CGAL::Conformal_alpha_shapes_3::Denoising parse_denoising(const std::string& name, const std::string& text)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  CAS3::Denoising denoising = CAS3::AUTOMATIC_DENOISING;
+  options_detail::choose(denoising, name, "mode", text, {{"auto", CAS3::AUTOMATIC_DENOISING},
+    {"on", CAS3::ALWAYS_DENOISE}, {"off", CAS3::NEVER_DENOISE}});
+  return denoising;
+}
+
+// A neighbor count of the smoothing jet fit, at least 7.
+inline unsigned int parse_denoising_neighbors(const std::string& name, const std::string& item)
+{
+  unsigned int neighbors = 0;
+  if(!options_detail::whole_number(item, 7u, ~0u, neighbors))
+    throw Option_error(name + ": not a neighbor count >= 7: '" + item + "'");
+  return neighbors;
+}
+
+inline CGAL::Conformal_alpha_shapes_3::Surface_extraction parse_extraction(const std::string& name,
+                                                                           const std::string& text)
+{
+  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+  CAS3::Surface_extraction extraction = CAS3::ADVANCING_FRONT;
+  options_detail::choose(extraction, name, "extraction", text,
+                         {{"front", CAS3::ADVANCING_FRONT}, {"solid", CAS3::SOLID_BOUNDARY}});
+  return extraction;
+}
+
 // Reads the command line. Throws Option_error.
 inline Curvature_options parse_curvature_options(int argc, char* argv[])
 {
-  namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
-  using options_detail::choose;
   using options_detail::split_list;
-  using options_detail::whole_number;
   Curvature_options o;
   bool input_given = false, neighborhoods_given = false;
   for(int i = 1; i < argc; ++i)
@@ -153,51 +226,23 @@ inline Curvature_options parse_curvature_options(int argc, char* argv[])
     else if(arg == "--csv")
       o.csv = true;
     else if(arg == "--alpha")
-    {
-      o.scales.clear();
-      for(const std::string& item : split_list(value()))
-      {
-        try { o.scales.push_back(parse_scale(item)); }
-        catch(const std::invalid_argument& e) { throw Option_error(std::string("--alpha: ") + e.what()); }
-        if(o.scales.back().kind() != CAS3::Scale::AUTOMATIC && !(o.scales.back().value() > 0))
-          throw Option_error("--alpha: a scale must be above 0 (a value > 0 or a quantile in (0%, 100%]): '" + item
-                             + "'");
-      }
-    }
+      o.scales = parse_scales(arg, split_list(value()));
     else if(arg == "--rings" || arg == "--radius")
     {
       if(!neighborhoods_given)
         o.neighborhoods.clear();
       neighborhoods_given = true;
       for(const std::string& item : split_list(value()))
-      {
-        if(arg == "--radius")
-        {
-          try { o.neighborhoods.push_back(parse_radius(item)); }
-          catch(const std::invalid_argument& e) { throw Option_error(std::string("--radius: ") + e.what()); }
-          continue;
-        }
-        int k = 0;
-        if(!whole_number(item, 1, 100, k))
-          throw Option_error("--rings: not a ring size from 1 to 100: '" + item + "'");
-        o.neighborhoods.push_back(CAS3::Neighborhood::rings(k));
-      }
+        o.neighborhoods.push_back(arg == "--radius" ? parse_radius_option(arg, item) : parse_rings_option(arg, item));
     }
     else if(arg == "--estimator")
-      choose(o.estimator, arg, "estimator", value(), {{"quadric", CAS3::QUADRIC_FIT},
-        {"euler-least-squares", CAS3::EULER_LEAST_SQUARES_FIT}, {"paper", CAS3::PAPER_EULER_FIT}});
+      o.estimator = parse_estimator(arg, value());
     else if(arg == "--denoise")
-      choose(o.denoising, arg, "mode", value(), {{"auto", CAS3::AUTOMATIC_DENOISING},
-        {"on", CAS3::ALWAYS_DENOISE}, {"off", CAS3::NEVER_DENOISE}});
+      o.denoising = parse_denoising(arg, value());
     else if(arg == "--denoise-neighbors")
-    {
-      const std::string item = value();
-      if(!whole_number(item, 7u, ~0u, o.denoising_neighbors))
-        throw Option_error("--denoise-neighbors: not a neighbor count >= 7: '" + item + "'");
-    }
+      o.denoising_neighbors = parse_denoising_neighbors(arg, value());
     else if(arg == "--extraction")
-      choose(o.extraction, arg, "extraction", value(),
-             {{"front", CAS3::ADVANCING_FRONT}, {"solid", CAS3::SOLID_BOUNDARY}});
+      o.extraction = parse_extraction(arg, value());
     else if(arg == "--output")
     {
       o.output = value();

@@ -40,6 +40,7 @@ struct Layer
   std::vector<float> values;        // number_of_values per point
   std::vector<std::uint8_t> source; // Point_source per point
 
+  Layer() = default;  // filled by the caller (the Python module, from its arrays)
   template <class Kernel>
   explicit Layer(const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures)
     : values(curvatures.size() * number_of_values), source(curvatures.size())

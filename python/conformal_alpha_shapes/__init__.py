@@ -1,0 +1,424 @@
+"""Conformal alpha shapes and multi-scale curvature of 3D point clouds.
+
+The package of the CGAL package Conformal_alpha_shapes_3, for numpy:
+
+- ``multiscale_curvatures(points)``: the whole job of the ``conformal_curvature``
+  program, per input point: normal, mean and Gaussian curvature (H, K),
+  principal curvatures and directions (k1, k2, d1, d2), at several scales.
+- ``ConformalAlphaShape(points)``: the filtration, its spectrum, its scale
+  suggestion and its surfaces as (vertices, faces) arrays.
+- ``vertex_curvatures(vertices, faces)``: curvature of a triangle mesh.
+- ``estimate_noise(points)``, ``denoise(points)``, ``read_point_cloud(path)``.
+
+Arrays are numpy arrays: points are (N, 3), float64 (other real dtypes and
+non-contiguous arrays are converted). Lengths and curvatures are in the
+units of the points. The computations release the GIL, report their
+progress to an optional ``progress(stage, fraction)`` callable and stop
+with ``KeyboardInterrupt`` on Ctrl-C between their steps.
+"""
+
+import numbers
+import os
+import tempfile
+
+import numpy as np
+
+from . import _native
+
+__all__ = [
+    "ConformalAlphaShape",
+    "Layer",
+    "NoiseEstimate",
+    "Result",
+    "denoise",
+    "estimate_noise",
+    "multiscale_curvatures",
+    "read_point_cloud",
+    "vertex_curvatures",
+]
+
+
+def _real_array(values, name):
+    array = values if isinstance(values, np.ndarray) else np.asarray(values)
+    if array.dtype.kind not in "fiu":
+        raise TypeError(f"{name} must be an array of real numbers, got dtype {array.dtype}")
+    return array
+
+
+def _triples(values, name, rows="N"):
+    """An (n, 3) float64 C-contiguous array; no copy when `values` is one."""
+    array = _real_array(values, name)
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise ValueError(f"{name} must be an ({rows}, 3) array, got shape {array.shape}")
+    return np.ascontiguousarray(array, dtype=np.float64)
+
+
+def _option_items(values, name, integers=False):
+    """The items of a list option as the program spells them ("auto", "25%", "4s", numbers)."""
+    if isinstance(values, (str, numbers.Number)):
+        values = (values,)
+    allowed = numbers.Integral if integers else (str, numbers.Real)
+    items = []
+    for value in values:
+        if isinstance(value, bool) or not isinstance(value, allowed):
+            raise TypeError(f"{name} must hold {'ints' if integers else 'strings or numbers'}, got {value!r}")
+        if isinstance(value, str):
+            if "," in value:
+                raise ValueError(f"{name}: one value per item, got {value!r}")
+            items.append(value)
+        elif isinstance(value, numbers.Integral):
+            items.append(str(int(value)))
+        else:
+            items.append(repr(float(value)))
+    return items
+
+
+def _choice(value, name):
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, got {value!r}")
+    return value
+
+
+def _threads(threads):
+    if threads is None:
+        return 0
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise TypeError(f"threads must be an int or None, got {threads!r}")
+    if threads < 1:
+        raise ValueError(f"threads must be >= 1, or None for all, got {threads}")
+    return int(threads)
+
+
+class Layer:
+    """The curvature of every point (or mesh vertex) for one scale and neighborhood.
+
+    Attributes (arrays of length N, the number of points):
+        normal, d1, d2: (N, 3) float64, the unit normal and principal
+            directions (d1 of k1, d2 of k2).
+        H, K, k1, k2: (N,) float64, mean and Gaussian curvature and the
+            principal curvatures (k1 >= k2), in inverse units of the points;
+            H > 0 where the surface bends away from its normal (a sphere with
+            outward normals has H = 1/r).
+        radius: (N,) float64, the radius of the fit's neighborhood.
+        source: (N,) uint8, where a point's values come from: 0 its own
+            surface vertex, 1 the nearest surface point, 2 no value (NaN).
+            Only for point layers (``None`` for a mesh).
+        distance: (N,) float64, from the point to the surface point whose
+            values it took (0 on its own vertex). Point layers only.
+        name: the layer's name, as the program names it ("rauto", "r4s",
+            "25pct_k2"); a: the scale of its surface; description: what the
+            layer is, as the program's file headers say; surface: a dict of
+            what the surface extraction did (faces, vertices, parts,
+            closed_parts, points_off_surface, fraction_of_points_on_surface).
+    """
+
+    _arrays = ("normal", "H", "K", "k1", "k2", "d1", "d2", "radius", "source", "distance")
+
+    def __init__(self, values):
+        for key in self._arrays:
+            setattr(self, key, values.get(key))
+        self.name = values.get("name")
+        self.a = values.get("a")
+        self.description = values.get("description")
+        self.surface = values.get("surface")
+
+    def __getitem__(self, key):
+        if key not in self._arrays or getattr(self, key) is None:
+            raise KeyError(key)
+        return getattr(self, key)
+
+    def keys(self):
+        """The names of the layer's arrays."""
+        return [key for key in self._arrays if getattr(self, key) is not None]
+
+    def __repr__(self):
+        label = f" {self.name!r}, a = {self.a:g}" if self.name is not None else ""
+        return f"<Layer{label}: {len(self.H)} values>"
+
+
+class Result:
+    """What ``multiscale_curvatures`` returns.
+
+    Attributes:
+        layers: the layer names, in the program's order (scale by scale,
+            neighborhoods inside); ``r[name]`` is the ``Layer``.
+        outlier: (N,) bool, the isolated far outliers, left off every surface
+            (their values are NaN with source 2).
+        spacing: the sample spacing, in units of the points ("4s" is four of them).
+        noise: the estimated noise, in spacings.
+        denoised: whether the points were smoothed before the shape was built.
+    """
+
+    def __init__(self, points, native):
+        self._points = points
+        self._layers = {values["name"]: Layer(values) for values in native["layers"]}
+        self._native_layers = native["layers"]
+        self.layers = tuple(self._layers)
+        self.outlier = native["outlier"]
+        self.spacing = native["spacing"]
+        self.noise = native["noise"]
+        self.denoised = native["denoised"]
+
+    def __getitem__(self, name):
+        try:
+            return self._layers[name]
+        except KeyError:
+            raise KeyError(f"no layer {name!r}; the layers are {', '.join(self.layers)}") from None
+
+    def __iter__(self):
+        return iter(self.layers)
+
+    def __len__(self):
+        return len(self.layers)
+
+    def __repr__(self):
+        return (f"<Result: {len(self.outlier)} points, layers {', '.join(self.layers)}, "
+                f"spacing {self.spacing:g}, noise {self.noise:.3g}>")
+
+    def to_structured(self, name):
+        """One layer as a numpy structured array, a record per point (PDAL's arrays).
+
+        Fields: X, Y, Z (the input points), NormalX, NormalY, NormalZ (PDAL's
+        names), then H, K, k1, k2, d1x, d1y, d1z, d2x, d2y, d2z, radius,
+        distance (float64), source (uint8) and outlier (bool).
+        """
+        layer = self[name]
+        fields = [("X", "f8"), ("Y", "f8"), ("Z", "f8"), ("NormalX", "f8"), ("NormalY", "f8"),
+                  ("NormalZ", "f8"), ("H", "f8"), ("K", "f8"), ("k1", "f8"), ("k2", "f8"),
+                  ("d1x", "f8"), ("d1y", "f8"), ("d1z", "f8"), ("d2x", "f8"), ("d2y", "f8"),
+                  ("d2z", "f8"), ("radius", "f8"), ("distance", "f8"), ("source", "u1"),
+                  ("outlier", "?")]
+        out = np.empty(len(self.outlier), dtype=fields)
+        for i, axis in enumerate("XYZ"):
+            out[axis] = self._points[:, i]
+            out["Normal" + axis] = layer.normal[:, i]
+        for key in ("H", "K", "k1", "k2", "radius", "distance", "source"):
+            out[key] = getattr(layer, key)
+        for direction in ("d1", "d2"):
+            for i, axis in enumerate("xyz"):
+                out[direction + axis] = getattr(layer, direction)[:, i]
+        out["outlier"] = self.outlier
+        return out
+
+    def write_ply(self, path):
+        """Writes the program's ``curvatures.ply`` (the same bytes) to ``path``.
+
+        A binary little-endian PLY point cloud: per point x y z (float64),
+        outlier, and per layer L the float32 properties nx_L ny_L nz_L H_L K_L
+        k1_L k2_L d1x_L .. d2z_L radius_L distance_L and the uchar source_L,
+        the scalar fields CloudCompare shows by name. The file is written
+        beside ``path`` and renamed into place: it is never half written.
+        """
+        path = os.fspath(path)
+        folder = os.path.dirname(os.path.abspath(path))
+        handle, temporary = tempfile.mkstemp(prefix=".", suffix=".ply.part", dir=folder)
+        os.close(handle)
+        try:
+            _native.write_point_cloud(temporary, self._points, self.outlier, self._native_layers)
+            os.replace(temporary, path)
+        except BaseException:
+            os.unlink(temporary)
+            raise
+
+
+def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("auto", "2s", "4s", "8s", "16s"),
+                          rings=(), estimator="quadric", denoise="auto", denoise_neighbors=None,
+                          extraction="front", threads=None, progress=None):
+    """Curvature of every point of a cloud at several scales: the program's job.
+
+    The points are checked, recentered and rescaled, isolated far outliers
+    left out; the noise is estimated and, when it calls for it, the points
+    are smoothed; the conformal alpha shape is built once; then for each
+    scale its surface is extracted and oriented, its curvature estimated
+    for each neighborhood and given to every input point. The same values
+    to the last bit as ``conformal_curvature`` on the same points and options.
+
+    Parameters:
+        points: (N, 3) array of the points (float64; other real dtypes and
+            layouts are converted).
+        normals: optional (N, 3) array, a normal per point (a scanner's):
+            each part of the surface is oriented by the majority of its
+            points' normals, each point by its own.
+        scales: the conformal scales ``a``: "auto" (the smallest at which the
+            surface covers the sample), a value > 0, or a quantile of the
+            facet values as "25%" (the paper's figures use 10%, 25%, 35%, 50%).
+        radii: neighborhood radii of the curvature fit: "auto" (chosen per
+            point), a multiple of the sample spacing as "4s", or a length in
+            units of the points (a number, or "0.01").
+        rings: ring sizes from 1 to 100, besides or instead of radii.
+        estimator: "quadric" (default), "euler-least-squares" or "paper".
+        denoise: "auto" (smooth when the estimated noise exceeds 0.02
+            spacings), "on"/True or "off"/False.
+        denoise_neighbors: neighbors of the smoothing jet fit (>= 7); default
+            from the estimated noise.
+        extraction: "front" (one sheet per part, open or closed) or "solid"
+            (the boundary of the enclosed solid).
+        threads: the most threads to use (TBB); None for all. The results
+            are the same with any number.
+        progress: optional callable ``progress(stage, fraction)``, called
+            between steps with a stage name and the fraction done in [0, 1].
+
+    Returns:
+        A ``Result``: ``r.layers`` the layer names, ``r[name]`` a ``Layer``.
+
+    Raises:
+        ValueError: NaN or infinite coordinates (naming the index), points
+            that do not span 3D (fewer than 4 distinct, coplanar), a scale or
+            radius out of range, an unknown option, wrong shapes.
+        TypeError: arrays that are not of real numbers, options of the wrong type.
+        KeyboardInterrupt: Ctrl-C, between two steps of the computation.
+    """
+    points = _triples(points, "points")
+    if normals is not None:
+        normals = _triples(normals, "normals")
+        if len(normals) != len(points):
+            raise ValueError(f"normals must be an (N, 3) array with N = {len(points)} (one per point), "
+                             f"got shape {normals.shape}")
+    if denoise is True or denoise is False:
+        denoise = "on" if denoise else "off"
+    if denoise_neighbors is not None and (isinstance(denoise_neighbors, bool)
+                                          or not isinstance(denoise_neighbors, numbers.Integral)):
+        raise TypeError(f"denoise_neighbors must be an int or None, got {denoise_neighbors!r}")
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress must be callable as progress(stage, fraction), got {progress!r}")
+    native = _native.multiscale_curvatures(
+        points, normals, _option_items(scales, "scales"), _option_items(radii, "radii"),
+        _option_items(rings, "rings", integers=True),
+        _choice(estimator, "estimator"), _choice(denoise, "denoise"),
+        "" if denoise_neighbors is None else str(int(denoise_neighbors)),
+        _choice(extraction, "extraction"), _threads(threads), progress)
+    return Result(points, native)
+
+
+class ConformalAlphaShape:
+    """The conformal alpha shape (filtration) of a point cloud, in its coordinates.
+
+    Each point's ball grows with its local scale (by default its distance to
+    its Voronoi pole, at least 4 sample spacings); a simplex enters the
+    filtration at its conformal value, its empty ball's radius relative to
+    the local scales of its points. Unlike ``multiscale_curvatures``, the
+    points are used as given (not recentered, no outlier removal, no smoothing).
+
+    Parameters:
+        points: (N, 3) array.
+        local_scales: optional (N,) array of positive local scales, one per
+            point, instead of the pole distances (all 1: the classic alpha
+            shape, ``a`` a squared radius as in CGAL's Alpha_shape_3).
+
+    Raises:
+        ValueError: as ``multiscale_curvatures``, and for local scales that
+            are not finite and positive (naming the index).
+    """
+
+    def __init__(self, points, local_scales=None):
+        points = _triples(points, "points")
+        if local_scales is not None:
+            local_scales = _real_array(local_scales, "local_scales")
+            if local_scales.shape != (len(points),):
+                raise ValueError(f"local_scales must be an (N,) array with N = {len(points)}, "
+                                 f"got shape {local_scales.shape}")
+            local_scales = np.ascontiguousarray(local_scales, dtype=np.float64)
+        self._shape = _native.Shape(points, local_scales)
+
+    def spectrum(self):
+        """The sorted distinct conformal values of the simplices (float64 array)."""
+        return self._shape.spectrum()
+
+    def alpha_at_quantile(self, q):
+        """The quantile ``q`` in [0, 1] of the finite facets' values (the paper's scale choice)."""
+        return self._shape.alpha_at_quantile(float(q))
+
+    def suggest_scale(self, extraction="front", coverage=None):
+        """The automatic scale: the smallest ``a`` whose surface covers the sample.
+
+        ``coverage`` is the share to cover (default 0.99 of the front's
+        vertices with "front", 0.9 of the points with "solid").
+        """
+        return self._shape.suggest_scale(_choice(extraction, "extraction"),
+                                         None if coverage is None else float(coverage))
+
+    def classify_facets(self, a):
+        """Counts of the finite facets per class at scale ``a``: a dict with
+        keys "exterior", "singular", "regular", "interior" (Alpha_shape_3's classes)."""
+        return self._shape.classify_facets(float(a))
+
+    def surface(self, a=None, extraction="front"):
+        """The oriented surface at scale ``a`` (default: ``suggest_scale()``).
+
+        Returns ``(vertices, faces, point_index)``: (V, 3) float64 positions,
+        (F, 3) int64 vertex indices of the triangles (counterclockwise seen
+        from the side the normals point to), (V,) int64 the index of each
+        vertex's input point.
+        """
+        return self._shape.surface(None if a is None else float(a), _choice(extraction, "extraction"))
+
+
+def vertex_curvatures(vertices, faces, *, rings=None, radius=None, estimator="quadric"):
+    """Curvature at every vertex of a triangle mesh.
+
+    Parameters:
+        vertices: (V, 3) array of positions.
+        faces: (F, 3) integer array of vertex indices, consistently oriented
+            (an oriented 2-manifold, with or without border).
+        rings: the neighborhood in rings of vertices (default 1), or
+        radius: a neighborhood radius in units of the vertices.
+        estimator: "quadric" (default), "euler-least-squares" or "paper".
+
+    Returns:
+        A ``Layer`` with normal, H, K, k1, k2, d1, d2 and radius per vertex
+        (NaN where the curvature is undefined, e.g. an isolated vertex).
+    """
+    vertices = _triples(vertices, "vertices", "V")
+    faces = _real_array(faces, "faces")
+    if faces.dtype.kind == "f":
+        raise TypeError(f"faces must be an array of integers, got dtype {faces.dtype}")
+    if faces.ndim != 2 or faces.shape[1] != 3:
+        raise ValueError(f"faces must be an (F, 3) array, got shape {faces.shape}")
+    if rings is not None and (isinstance(rings, bool) or not isinstance(rings, numbers.Integral)):
+        raise TypeError(f"rings must be an int, got {rings!r}")
+    return Layer(_native.vertex_curvatures(vertices, np.ascontiguousarray(faces, dtype=np.int64),
+                                           None if rings is None else int(rings),
+                                           None if radius is None else float(radius),
+                                           _choice(estimator, "estimator")))
+
+
+class NoiseEstimate(float):
+    """The noise of a sample in sample spacings (a float), with
+
+    spacing: the sample spacing, in units of the points;
+    noise_24: the same reading with 24 neighbors instead of 16 (it grows
+        where the sampling does not resolve surface detail);
+    calls_for_denoising: whether ``multiscale_curvatures`` smooths the points.
+    """
+
+    def __new__(cls, values):
+        self = super().__new__(cls, values["noise"])
+        self.spacing = values["spacing"]
+        self.noise_24 = values["noise_24"]
+        self.calls_for_denoising = values["calls_for_denoising"]
+        return self
+
+    def __repr__(self):
+        return f"NoiseEstimate({float(self):.4g} spacings, spacing {self.spacing:.4g})"
+
+
+def estimate_noise(points):
+    """The noise of a point sample of a surface, in sample spacings (a ``NoiseEstimate``)."""
+    return NoiseEstimate(_native.estimate_noise(_triples(points, "points")))
+
+
+def denoise(points, neighbors=None):
+    """The points smoothed as ``multiscale_curvatures`` smooths them: a new (N, 3) array.
+
+    Each point is projected onto a quadratic jet fitted to its ``neighbors``
+    nearest points (>= 7; default, and the number of passes, from the
+    estimated noise).
+    """
+    if neighbors is not None and (isinstance(neighbors, bool) or not isinstance(neighbors, numbers.Integral)):
+        raise TypeError(f"neighbors must be an int or None, got {neighbors!r}")
+    return _native.denoise(_triples(points, "points"), None if neighbors is None else int(neighbors))
+
+
+def read_point_cloud(path):
+    """The points (and normals, or None) of a .xyz, .pwn, .ply, .off or .obj file, as the program reads them."""
+    return _native.read_point_cloud(os.fspath(path))

@@ -1,0 +1,84 @@
+# Type stub of conformal_alpha_shapes, for editors and type checkers.
+import os
+from typing import Callable, Dict, Iterator, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Points = npt.ArrayLike
+_Item = Union[str, float]
+
+class Layer:
+    name: Optional[str]
+    a: Optional[float]
+    description: Optional[str]
+    surface: Optional[Dict[str, float]]
+    normal: npt.NDArray[np.float64]
+    H: npt.NDArray[np.float64]
+    K: npt.NDArray[np.float64]
+    k1: npt.NDArray[np.float64]
+    k2: npt.NDArray[np.float64]
+    d1: npt.NDArray[np.float64]
+    d2: npt.NDArray[np.float64]
+    radius: npt.NDArray[np.float64]
+    source: Optional[npt.NDArray[np.uint8]]
+    distance: Optional[npt.NDArray[np.float64]]
+    def __getitem__(self, key: str) -> np.ndarray: ...
+    def keys(self) -> List[str]: ...
+
+class Result:
+    layers: Tuple[str, ...]
+    outlier: npt.NDArray[np.bool_]
+    spacing: float
+    noise: float
+    denoised: bool
+    def __getitem__(self, name: str) -> Layer: ...
+    def __iter__(self) -> Iterator[str]: ...
+    def __len__(self) -> int: ...
+    def to_structured(self, name: str) -> np.ndarray: ...
+    def write_ply(self, path: Union[str, os.PathLike]) -> None: ...
+
+def multiscale_curvatures(
+    points: _Points,
+    normals: Optional[_Points] = ...,
+    *,
+    scales: Union[_Item, Sequence[_Item]] = ...,
+    radii: Union[_Item, Sequence[_Item]] = ...,
+    rings: Union[int, Sequence[int]] = ...,
+    estimator: str = ...,
+    denoise: Union[str, bool] = ...,
+    denoise_neighbors: Optional[int] = ...,
+    extraction: str = ...,
+    threads: Optional[int] = ...,
+    progress: Optional[Callable[[str, float], object]] = ...,
+) -> Result: ...
+
+class ConformalAlphaShape:
+    def __init__(self, points: _Points, local_scales: Optional[npt.ArrayLike] = ...) -> None: ...
+    def spectrum(self) -> npt.NDArray[np.float64]: ...
+    def alpha_at_quantile(self, q: float) -> float: ...
+    def suggest_scale(self, extraction: str = ..., coverage: Optional[float] = ...) -> float: ...
+    def classify_facets(self, a: float) -> Dict[str, int]: ...
+    def surface(
+        self, a: Optional[float] = ..., extraction: str = ...
+    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
+
+def vertex_curvatures(
+    vertices: _Points,
+    faces: npt.ArrayLike,
+    *,
+    rings: Optional[int] = ...,
+    radius: Optional[float] = ...,
+    estimator: str = ...,
+) -> Layer: ...
+
+class NoiseEstimate(float):
+    spacing: float
+    noise_24: float
+    calls_for_denoising: bool
+
+def estimate_noise(points: _Points) -> NoiseEstimate: ...
+def denoise(points: _Points, neighbors: Optional[int] = ...) -> npt.NDArray[np.float64]: ...
+def read_point_cloud(
+    path: Union[str, os.PathLike]
+) -> Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]]]: ...

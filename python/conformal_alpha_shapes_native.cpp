@@ -1,0 +1,603 @@
+// The compiled half of the Python module `conformal_alpha_shapes`: numpy
+// arrays in, the library's public functions, numpy arrays out. Argument
+// shapes and types are checked by the Python half (conformal_alpha_shapes/
+// __init__.py) and again here, so that this module never crashes on what a
+// caller passes. The GIL is released while the library computes; between
+// steps the computation stops for Ctrl-C and reports its progress.
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include "cas3_curvature_options.h"
+#include "cas3_curvature_output.h"
+#include "cas3_layer_names.h"
+#include "cas3_read_point_cloud.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cstdint>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef CAS3::Multiscale_curvatures<K> Analysis;
+typedef Analysis::Shape Shape;
+typedef Analysis::Surface Surface;
+typedef py::array_t<double, py::array::c_style | py::array::forcecast> Doubles;
+
+namespace {
+
+// The rows of an (N, 3) array; `what` names it in the message.
+std::size_t check_rows(const py::array& a, const char* what)
+{
+  if(a.ndim() != 2 || a.shape(1) != 3)
+    throw py::value_error(std::string(what) + " must be an (N, 3) array");
+  return std::size_t(a.shape(0));
+}
+
+template <class T>
+std::vector<T> to_triples(const Doubles& a, const char* what)
+{
+  const std::size_t n = check_rows(a, what);
+  const double* p = a.data();
+  std::vector<T> out;
+  out.reserve(n);
+  for(std::size_t i = 0; i < n; ++i, p += 3)
+    out.emplace_back(p[0], p[1], p[2]);
+  return out;
+}
+
+// Caps TBB's threads for the life of the object; 0 leaves them as they are.
+class Thread_cap
+{
+public:
+  explicit Thread_cap(int threads)
+  {
+    if(threads < 0)
+      throw py::value_error("threads must be >= 1, or None for all");
+#ifdef CGAL_LINKED_WITH_TBB
+    if(threads > 0)
+      m_control.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+#endif
+  }
+
+private:
+#ifdef CGAL_LINKED_WITH_TBB
+  std::optional<tbb::global_control> m_control;
+#endif
+};
+
+// Called by the computation, with the GIL released, between its steps: takes
+// the GIL, raises KeyboardInterrupt (as a C++ exception that unwinds the
+// computation) when Ctrl-C was pressed, and calls the caller's progress
+// function.
+class Checkpoint
+{
+public:
+  explicit Checkpoint(py::object progress) : m_progress(std::move(progress)) {}
+  void operator()(const std::string& stage, double fraction) const
+  {
+    py::gil_scoped_acquire gil;
+    if(PyErr_CheckSignals() != 0)
+      throw py::error_already_set();
+    if(!m_progress.is_none())
+      m_progress(stage, fraction);
+  }
+
+private:
+  py::object m_progress;
+};
+
+template <class T>
+py::array_t<T> new_array(std::size_t n)
+{
+  return py::array_t<T>(std::vector<py::ssize_t>{py::ssize_t(n)});
+}
+py::array_t<double> new_triples(std::size_t n)
+{
+  return py::array_t<double>(std::vector<py::ssize_t>{py::ssize_t(n), 3});
+}
+void put_triple(double* p, std::size_t i, const Vector& v)
+{
+  p[3 * i] = v.x();
+  p[3 * i + 1] = v.y();
+  p[3 * i + 2] = v.z();
+}
+
+// A layer of per-point values (Point_curvature) as a dict of numpy arrays.
+py::dict point_layer(const std::vector<CAS3::Point_curvature<K> >& values)
+{
+  const std::size_t n = values.size();
+  py::array_t<double> normal = new_triples(n), d1 = new_triples(n), d2 = new_triples(n);
+  py::array_t<double> H = new_array<double>(n), Kg = new_array<double>(n), k1 = new_array<double>(n),
+                      k2 = new_array<double>(n), radius = new_array<double>(n), distance = new_array<double>(n);
+  py::array_t<std::uint8_t> source = new_array<std::uint8_t>(n);
+  double *pn = normal.mutable_data(), *p1 = d1.mutable_data(), *p2 = d2.mutable_data();
+  double *pH = H.mutable_data(), *pK = Kg.mutable_data(), *pk1 = k1.mutable_data(), *pk2 = k2.mutable_data();
+  double *pr = radius.mutable_data(), *pd = distance.mutable_data();
+  std::uint8_t* ps = source.mutable_data();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const CAS3::Point_curvature<K>& c = values[i];
+    put_triple(pn, i, c.normal);
+    put_triple(p1, i, c.principal.max_direction);
+    put_triple(p2, i, c.principal.min_direction);
+    pH[i] = c.mean_curvature;
+    pK[i] = c.gaussian_curvature;
+    pk1[i] = c.principal.max_curvature;
+    pk2[i] = c.principal.min_curvature;
+    pr[i] = c.radius;
+    pd[i] = c.distance;
+    ps[i] = std::uint8_t(c.source);
+  }
+  py::dict layer;
+  layer["normal"] = normal;
+  layer["H"] = H;
+  layer["K"] = Kg;
+  layer["k1"] = k1;
+  layer["k2"] = k2;
+  layer["d1"] = d1;
+  layer["d2"] = d2;
+  layer["radius"] = radius;
+  layer["source"] = source;
+  layer["distance"] = distance;
+  return layer;
+}
+
+py::dict report_dict(const CAS3::Surface_report& r)
+{
+  py::dict d;
+  d["faces"] = r.number_of_faces;
+  d["vertices"] = r.number_of_vertices;
+  d["parts"] = r.number_of_parts;
+  d["closed_parts"] = r.number_of_closed_parts;
+  d["points_off_surface"] = r.number_of_points_off_surface;
+  d["fraction_of_points_on_surface"] = r.fraction_of_points_on_surface();
+  return d;
+}
+
+struct Job_options
+{
+  std::vector<CAS3::Scale> scales;
+  std::vector<CAS3::Neighborhood> neighborhoods;
+  CAS3::Curvature_estimator estimator;
+  CAS3::Denoising denoising;
+  unsigned int denoising_neighbors;
+  CAS3::Surface_extraction extraction;
+};
+
+// The options as the program reads them (the same readers and messages,
+// named after the Python keywords); bad ones raise ValueError.
+Job_options read_job_options(const std::vector<std::string>& scales, const std::vector<std::string>& radii,
+                             const std::vector<std::string>& rings, const std::string& estimator,
+                             const std::string& denoise, const std::string& denoise_neighbors,
+                             const std::string& extraction)
+{
+  try
+  {
+    Job_options o;
+    if(scales.empty())
+      throw cas3::Option_error("scales: no scale given");
+    o.scales = cas3::parse_scales("scales", scales);
+    for(const std::string& item : radii)
+      o.neighborhoods.push_back(cas3::parse_radius_option("radii", item));
+    for(const std::string& item : rings)
+      o.neighborhoods.push_back(cas3::parse_rings_option("rings", item));
+    if(o.neighborhoods.empty())
+      throw cas3::Option_error("radii, rings: no neighborhood given");
+    o.estimator = cas3::parse_estimator("estimator", estimator);
+    o.denoising = cas3::parse_denoising("denoise", denoise);
+    o.denoising_neighbors =
+      denoise_neighbors.empty() ? 0u : cas3::parse_denoising_neighbors("denoise_neighbors", denoise_neighbors);
+    o.extraction = cas3::parse_extraction("extraction", extraction);
+    return o;
+  }
+  catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
+}
+
+// The program's job (conformal_curvature.cpp) without its files: the
+// analysis, then per scale its surface and per neighborhood a layer, each
+// layer's values turned into numpy arrays as soon as they are computed.
+py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<Doubles>& normals_array,
+                               const std::vector<std::string>& scales, const std::vector<std::string>& radii,
+                               const std::vector<std::string>& rings, const std::string& estimator,
+                               const std::string& denoise, const std::string& denoise_neighbors,
+                               const std::string& extraction, int threads, py::object progress)
+{
+  const Job_options o =
+    read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  std::vector<Vector> normals;
+  if(normals_array)
+  {
+    normals = to_triples<Vector>(*normals_array, "normals");
+    if(normals.size() != points.size())
+      throw py::value_error("normals must be an (N, 3) array of one normal per point: " +
+                            std::to_string(normals.size()) + " normals for " + std::to_string(points.size()) +
+                            " points");
+  }
+  const Checkpoint checkpoint(std::move(progress));
+  const Thread_cap cap(threads);
+  const std::size_t steps = 1 + o.scales.size() * (1 + o.neighborhoods.size());
+  std::size_t done = 0;
+  auto step = [&](const std::string& stage) { checkpoint(stage, double(done++) / double(steps)); };
+
+  py::list layers;
+  std::unique_ptr<Analysis> analysis;
+  {
+    py::gil_scoped_release release;
+    step("conformal alpha shape");
+    const auto np = CAS3::parameters::reference_normals(std::cref(normals),
+      CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
+    analysis = o.denoising_neighbors > 0
+      ? std::make_unique<Analysis>(points.begin(), points.end(),
+                                   CAS3::parameters::denoising_neighbors(o.denoising_neighbors, np))
+      : std::make_unique<Analysis>(points.begin(), points.end(), np);
+    for(const CAS3::Scale& scale : o.scales)
+    {
+      step("surface at scale " + cas3::scale_text(scale));
+      const double a = analysis->scale_value(scale);
+      Surface surface;
+      const CAS3::Surface_report report = analysis->surface(a, surface);
+      step("curvature at scale " + cas3::scale_text(scale));
+      std::vector<std::vector<CAS3::Point_curvature<K> > > values =
+        analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);
+      for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
+      {
+        const std::string label = cas3::layer_label(scale, o.neighborhoods[r], o.scales.size() > 1);
+        {
+          py::gil_scoped_acquire gil;
+          py::dict layer = point_layer(values[r]);
+          layer["name"] = label;
+          layer["a"] = a;
+          layer["description"] = cas3::layer_description(*analysis, a, scale, o.neighborhoods[r], label);
+          layer["surface"] = report_dict(report);
+          layers.append(layer);
+        }
+        std::vector<CAS3::Point_curvature<K> >().swap(values[r]);
+        if(r + 1 < o.neighborhoods.size())
+          step("curvature at scale " + cas3::scale_text(scale));
+      }
+    }
+    checkpoint("done", 1.0);
+  }
+  py::array_t<bool> outlier = new_array<bool>(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    outlier.mutable_data()[i] = analysis->is_outlier(i);
+  const CAS3::Noise_estimate noise = analysis->noise();
+  const CAS3::Denoising_plan denoising = analysis->denoising();
+  {
+    py::gil_scoped_release release;  // the shape is large: other threads run while it is freed
+    analysis.reset();
+  }
+  py::dict result;
+  result["layers"] = layers;
+  result["outlier"] = outlier;
+  result["spacing"] = noise.spacing;
+  result["noise"] = noise.noise;
+  result["denoised"] = denoising.passes > 0;
+  result["denoising_passes"] = denoising.passes;
+  result["denoising_neighbors"] = denoising.neighbors;
+  return result;
+}
+
+// Writes the program's curvatures.ply from the arrays of a result: the same
+// bytes, since the values are turned into floats as the program does.
+void write_point_cloud(const std::string& path, const Doubles& points_array, const py::array_t<bool>& outlier,
+                       const py::list& layers)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  if(std::size_t(outlier.size()) != points.size())
+    throw py::value_error("write_ply: one outlier flag per point");
+  std::vector<bool> is_outlier(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    is_outlier[i] = outlier.at(py::ssize_t(i));
+  std::vector<cas3::Layer> out;
+  for(py::handle h : layers)
+  {
+    const py::dict d = py::reinterpret_borrow<py::dict>(h);
+    cas3::Layer layer;
+    layer.label = d["name"].cast<std::string>();
+    layer.description = d["description"].cast<std::string>();
+    const std::size_t n = points.size();
+    layer.values.resize(n * cas3::Layer::number_of_values);
+    layer.source.resize(n);
+    // the columns in the file's order (cas3::Layer::value_names())
+    const char* const triples[3] = {"normal", "d1", "d2"};
+    const int triple_column[3] = {0, 7, 10};
+    const char* const scalars[6] = {"H", "K", "k1", "k2", "radius", "distance"};
+    const int scalar_column[6] = {3, 4, 5, 6, 13, 14};
+    for(int t = 0; t < 3; ++t)
+    {
+      const Doubles a = d[triples[t]].cast<Doubles>();
+      if(check_rows(a, triples[t]) != n)
+        throw py::value_error(std::string("write_ply: ") + triples[t] + " has not one row per point");
+      for(std::size_t i = 0; i < n; ++i)
+        for(int j = 0; j < 3; ++j)
+          layer.values[i * cas3::Layer::number_of_values + std::size_t(triple_column[t] + j)] =
+            float(a.data()[3 * i + std::size_t(j)]);
+    }
+    for(int s = 0; s < 6; ++s)
+    {
+      const Doubles a = d[scalars[s]].cast<Doubles>();
+      if(std::size_t(a.size()) != n)
+        throw py::value_error(std::string("write_ply: ") + scalars[s] + " has not one value per point");
+      for(std::size_t i = 0; i < n; ++i)
+        layer.values[i * cas3::Layer::number_of_values + std::size_t(scalar_column[s])] = float(a.data()[i]);
+    }
+    const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> source =
+      d["source"].cast<py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> >();
+    if(std::size_t(source.size()) != n)
+      throw py::value_error("write_ply: source has not one value per point");
+    std::copy(source.data(), source.data() + n, layer.source.begin());
+    out.push_back(std::move(layer));
+  }
+  py::gil_scoped_release release;
+  std::ofstream file(path, std::ios::binary);
+  if(!file)
+    throw std::runtime_error("write_ply: cannot open " + path);
+  cas3::write_point_cloud(file, points, is_outlier, out);
+  file.close();
+  if(!file)
+    throw std::runtime_error("write_ply: cannot write " + path);
+}
+
+// The program's reader: .xyz, .pwn, .ply, .off, .obj.
+py::tuple read_point_cloud(const std::string& path)
+{
+  cas3::Point_cloud cloud;
+  {
+    py::gil_scoped_release release;
+    try { cloud = cas3::read_point_cloud(path); }
+    catch(const cas3::Read_error& e) { throw std::invalid_argument(e.what()); }
+  }
+  py::array_t<double> points = new_triples(cloud.points.size());
+  for(std::size_t i = 0; i < cloud.points.size(); ++i)
+    put_triple(points.mutable_data(), i, cloud.points[i] - CGAL::ORIGIN);
+  if(cloud.normals.empty())
+    return py::make_tuple(points, py::none());
+  py::array_t<double> normals = new_triples(cloud.normals.size());
+  for(std::size_t i = 0; i < cloud.normals.size(); ++i)
+    put_triple(normals.mutable_data(), i, cloud.normals[i]);
+  return py::make_tuple(points, normals);
+}
+
+CAS3::Surface_extraction extraction_named(const std::string& name)
+{
+  try { return cas3::parse_extraction("extraction", name); }
+  catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
+}
+
+// A Conformal_alpha_shape_3 of the caller's points, in their coordinates.
+class Shape_handle
+{
+public:
+  Shape_handle(const Doubles& points_array, const std::optional<Doubles>& local_scales)
+  {
+    const std::vector<Point> points = to_triples<Point>(points_array, "points");
+    std::vector<double> scales;
+    if(local_scales)
+    {
+      if(local_scales->ndim() != 1 || std::size_t(local_scales->shape(0)) != points.size())
+        throw py::value_error("local_scales must be an (N,) array, one value per point");
+      scales.assign(local_scales->data(), local_scales->data() + points.size());
+    }
+    py::gil_scoped_release release;
+    m_shape = std::make_unique<Shape>();
+    if(local_scales)
+      m_shape->make_conformal_alpha_shape(points.begin(), points.end(), CAS3::parameters::local_scales(scales));
+    else
+      m_shape->make_conformal_alpha_shape(points.begin(), points.end());
+  }
+
+  py::array_t<double> spectrum() const
+  {
+    py::array_t<double> values = new_array<double>(m_shape->number_of_alphas());
+    std::copy(m_shape->alpha_begin(), m_shape->alpha_end(), values.mutable_data());
+    return values;
+  }
+  double alpha_at_quantile(double q) const { return m_shape->alpha_at_quantile(q); }
+
+  double suggest_scale(const std::string& extraction, std::optional<double> coverage) const
+  {
+    const CAS3::Surface_extraction method = extraction_named(extraction);
+    py::gil_scoped_release release;
+    return coverage ? CAS3::suggest_scale(*m_shape, CAS3::parameters::coverage(*coverage,
+                                                                   CAS3::parameters::surface_extraction(method)))
+                    : CAS3::suggest_scale(*m_shape, CAS3::parameters::surface_extraction(method));
+  }
+
+  py::dict classify_facets(double a) const
+  {
+    if(!(a >= 0))
+      throw py::value_error("classify_facets: the scale a must be >= 0");
+    std::size_t count[4] = {0, 0, 0, 0};
+    for(auto f : m_shape->finite_facets())
+      ++count[int(m_shape->classify(f, a))];
+    py::dict d;
+    d["exterior"] = count[Shape::EXTERIOR];
+    d["singular"] = count[Shape::SINGULAR];
+    d["regular"] = count[Shape::REGULAR];
+    d["interior"] = count[Shape::INTERIOR];
+    return d;
+  }
+
+  py::tuple surface(std::optional<double> a, const std::string& extraction) const
+  {
+    const CAS3::Surface_extraction method = extraction_named(extraction);
+    Surface mesh;
+    {
+      py::gil_scoped_release release;
+      const double scale = a ? *a : CAS3::suggest_scale(*m_shape, CAS3::parameters::surface_extraction(method));
+      auto index = mesh.add_property_map<Surface::Vertex_index, std::size_t>("v:input_index").first;
+      CAS3::extract_surface(*m_shape, scale, mesh, CAS3::parameters::vertex_input_index_map(
+                                                     index, CAS3::parameters::surface_extraction(method)));
+    }
+    return mesh_arrays(mesh);
+  }
+
+  // (vertices, faces, point_index) of a surface mesh with "v:input_index"
+  static py::tuple mesh_arrays(const Surface& mesh)
+  {
+    const auto index = mesh.property_map<Surface::Vertex_index, std::size_t>("v:input_index").first;
+    py::array_t<double> vertices = new_triples(mesh.number_of_vertices());
+    py::array_t<std::int64_t> point_index = new_array<std::int64_t>(mesh.number_of_vertices());
+    std::vector<std::int64_t> number(mesh.num_vertices(), -1);
+    std::size_t next = 0;
+    for(Surface::Vertex_index v : mesh.vertices())
+    {
+      put_triple(vertices.mutable_data(), next, mesh.point(v) - CGAL::ORIGIN);
+      point_index.mutable_data()[next] = std::int64_t(index[v]);
+      number[v] = std::int64_t(next++);
+    }
+    py::array_t<std::int64_t> faces(std::vector<py::ssize_t>{py::ssize_t(mesh.number_of_faces()), 3});
+    std::size_t f_next = 0;
+    for(Surface::Face_index f : mesh.faces())
+    {
+      int j = 0;
+      for(Surface::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        faces.mutable_data()[3 * f_next + std::size_t(j++)] = number[v];
+      ++f_next;
+    }
+    return py::make_tuple(vertices, faces, point_index);
+  }
+
+private:
+  std::unique_ptr<Shape> m_shape;
+};
+
+// estimate_vertex_curvatures() on the triangle mesh (vertices, faces).
+py::dict vertex_curvatures(const Doubles& vertices_array,
+                           const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& faces_array,
+                           std::optional<int> rings, std::optional<double> radius, const std::string& estimator)
+{
+  const std::vector<Point> vertices = to_triples<Point>(vertices_array, "vertices");
+  if(faces_array.ndim() != 2 || faces_array.shape(1) != 3)
+    throw py::value_error("faces must be an (F, 3) array of vertex indices");
+  if(rings && radius)
+    throw py::value_error("vertex_curvatures: give rings or radius, not both");
+  CAS3::Curvature_estimator method;
+  try { method = cas3::parse_estimator("estimator", estimator); }
+  catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
+  const CAS3::Neighborhood neighborhood = radius ? CAS3::Neighborhood::radius(*radius)
+                                                 : CAS3::Neighborhood::rings(rings ? *rings : 1);
+  Surface mesh;
+  for(const Point& p : vertices)
+    mesh.add_vertex(p);
+  const std::int64_t* f = faces_array.data();
+  for(py::ssize_t i = 0; i < faces_array.shape(0); ++i, f += 3)
+  {
+    for(int j = 0; j < 3; ++j)
+      if(f[j] < 0 || std::size_t(f[j]) >= vertices.size())
+        throw py::value_error("faces: face " + std::to_string(i) + " names vertex " + std::to_string(f[j]) +
+                              ", not in [0, " + std::to_string(vertices.size()) + ")");
+    if(f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+      throw py::value_error("faces: face " + std::to_string(i) + " repeats a vertex");
+    if(mesh.add_face(Surface::Vertex_index(std::uint32_t(f[0])), Surface::Vertex_index(std::uint32_t(f[1])),
+                     Surface::Vertex_index(std::uint32_t(f[2]))) == Surface::null_face())
+      throw py::value_error("faces: face " + std::to_string(i) +
+                            " cannot be added to an oriented 2-manifold with the faces before it");
+  }
+  std::vector<CAS3::Vertex_curvature<K> > values;
+  {
+    py::gil_scoped_release release;
+    values = CAS3::estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
+      mesh, std::vector<CAS3::Neighborhood>{neighborhood}, CAS3::parameters::estimator(method)).front();
+  }
+  const std::size_t n = values.size();
+  py::array_t<double> normal = new_triples(n), d1 = new_triples(n), d2 = new_triples(n);
+  py::array_t<double> H = new_array<double>(n), Kg = new_array<double>(n), k1 = new_array<double>(n),
+                      k2 = new_array<double>(n), used = new_array<double>(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const CAS3::Vertex_curvature<K>& c = values[i];
+    put_triple(normal.mutable_data(), i, c.normal);
+    put_triple(d1.mutable_data(), i, c.principal.max_direction);
+    put_triple(d2.mutable_data(), i, c.principal.min_direction);
+    H.mutable_data()[i] = c.mean_curvature();
+    Kg.mutable_data()[i] = c.gaussian_curvature();
+    k1.mutable_data()[i] = c.principal.max_curvature;
+    k2.mutable_data()[i] = c.principal.min_curvature;
+    used.mutable_data()[i] = c.radius;
+  }
+  py::dict layer;
+  layer["normal"] = normal;
+  layer["H"] = H;
+  layer["K"] = Kg;
+  layer["k1"] = k1;
+  layer["k2"] = k2;
+  layer["d1"] = d1;
+  layer["d2"] = d2;
+  layer["radius"] = used;
+  return layer;
+}
+
+py::dict estimate_noise(const Doubles& points_array)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  CAS3::Noise_estimate e;
+  {
+    py::gil_scoped_release release;
+    e = CAS3::estimate_noise(points);
+  }
+  py::dict d;
+  d["noise"] = e.noise;
+  d["noise_24"] = e.noise_24;
+  d["spacing"] = e.spacing;
+  d["calls_for_denoising"] = e.calls_for_denoising();
+  return d;
+}
+
+py::array_t<double> denoise(const Doubles& points_array, std::optional<int> neighbors)
+{
+  std::vector<Point> points = to_triples<Point>(points_array, "points");
+  if(neighbors && *neighbors < 7)
+    throw py::value_error("denoise: neighbors must be >= 7, got " + std::to_string(*neighbors));
+  {
+    py::gil_scoped_release release;
+    const CAS3::Denoising_plan plan =
+      CAS3::denoising_plan(CAS3::estimate_noise(points), CAS3::ALWAYS_DENOISE, neighbors ? unsigned(*neighbors) : 0u);
+    CAS3::denoise(points, plan);
+  }
+  py::array_t<double> out = new_triples(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    put_triple(out.mutable_data(), i, points[i] - CGAL::ORIGIN);
+  return out;
+}
+
+} // namespace
+
+PYBIND11_MODULE(_native, m)
+{
+  m.doc() = "The compiled part of conformal_alpha_shapes; use the package, not this module.";
+  m.def("multiscale_curvatures", &multiscale_curvatures, py::arg("points"), py::arg("normals"),
+        py::arg("scales"), py::arg("radii"), py::arg("rings"), py::arg("estimator"), py::arg("denoise"),
+        py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"));
+  m.def("write_point_cloud", &write_point_cloud);
+  m.def("read_point_cloud", &read_point_cloud);
+  m.def("vertex_curvatures", &vertex_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("rings"),
+        py::arg("radius"), py::arg("estimator"));
+  m.def("estimate_noise", &estimate_noise);
+  m.def("denoise", &denoise);
+  py::class_<Shape_handle>(m, "Shape")
+    .def(py::init<const Doubles&, const std::optional<Doubles>&>())
+    .def("spectrum", &Shape_handle::spectrum)
+    .def("alpha_at_quantile", &Shape_handle::alpha_at_quantile)
+    .def("suggest_scale", &Shape_handle::suggest_scale)
+    .def("classify_facets", &Shape_handle::classify_facets)
+    .def("surface", &Shape_handle::surface);
+}

@@ -1,0 +1,168 @@
+"""The module's functions on shapes with known values: a sphere, ellipsoids
+(clean and noisy), a mesh of a sphere; the result's layers, arrays and
+conversions."""
+import numpy as np
+import pytest
+
+import conformal_alpha_shapes as cas
+from conftest import ellipsoid, fibonacci_sphere
+
+
+@pytest.fixture(scope="module")
+def sphere_result():
+    points, normals = fibonacci_sphere(4000, radius=2.0)
+    return points, normals, cas.multiscale_curvatures(points)
+
+
+def test_sphere_layers_and_values(sphere_result):
+    points, normals, r = sphere_result
+    assert r.layers == ("rauto", "r2s", "r4s", "r8s", "r16s")
+    assert r.outlier.shape == (4000,) and not r.outlier.any()
+    assert not r.denoised and r.noise < 0.02
+    for name in r.layers:
+        layer = r[name]
+        assert layer.name == name and layer.a > 0
+        assert (layer.source == 0).all()
+        assert np.abs(layer.H - 0.5).max() < 0.01, name
+        assert np.abs(layer.K - 0.25).max() < 0.01, name
+        assert np.abs(np.einsum("ij,ij->i", layer.normal, normals) - 1).max() < 1e-3, name
+        assert (layer.k1 >= layer.k2).all()
+        for key, shape in (("d1", (4000, 3)), ("d2", (4000, 3)), ("radius", (4000,)), ("distance", (4000,))):
+            assert layer[key].shape == shape and layer[key].dtype == np.float64
+        assert layer.source.dtype == np.uint8
+    with pytest.raises(KeyError, match="rauto"):
+        r["r3s"]
+
+
+def test_noisy_ellipsoid_outward_and_accurate():
+    points, normals, H = ellipsoid(20000, (1.5, 1.0, 0.75), noise=0.002)
+    r = cas.multiscale_curvatures(points, radii=("auto", "4s"))
+    for name in r.layers:
+        layer = r[name]
+        assert (np.einsum("ij,ij->i", layer.normal, normals) > 0.9).all(), name
+        relative = np.abs(layer.H - H) / np.abs(H)
+        assert np.median(relative) < 0.02, name
+        assert np.percentile(relative, 99) < 0.1, name
+
+
+def test_given_inward_normals_are_followed():
+    points, normals, H = ellipsoid(5000, (1.5, 1.0, 0.75))
+    r = cas.multiscale_curvatures(points, -normals, radii=("4s",))
+    layer = r["r4s"]
+    assert (np.einsum("ij,ij->i", layer.normal, normals) < -0.9).all()
+    assert (layer.H < 0).all()
+
+
+def test_structured_array(sphere_result):
+    points, _, r = sphere_result
+    s = r.to_structured("r4s")
+    assert s.shape == (4000,)
+    assert np.array_equal(s["X"], points[:, 0]) and np.array_equal(s["NormalZ"], r["r4s"].normal[:, 2])
+    assert np.array_equal(s["H"], r["r4s"].H) and np.array_equal(s["d2y"], r["r4s"].d2[:, 1])
+    assert s["source"].dtype == np.uint8 and s["outlier"].dtype == np.bool_
+
+
+def test_several_scales_and_rings():
+    points, _ = fibonacci_sphere(3000)
+    r = cas.multiscale_curvatures(points, scales=("auto", "50%"), radii=(), rings=(2,))
+    assert r.layers == ("auto_k2", "50pct_k2")
+    assert r["auto_k2"].a != r["50pct_k2"].a
+    assert np.abs(r["auto_k2"].H - 1).max() < 0.02
+
+
+def test_conformal_alpha_shape():
+    points, normals = fibonacci_sphere(2000)
+    shape = cas.ConformalAlphaShape(points)
+    spectrum = shape.spectrum()
+    assert spectrum.ndim == 1 and (np.diff(spectrum) > 0).all()
+    a = shape.suggest_scale()
+    assert shape.alpha_at_quantile(0) <= shape.alpha_at_quantile(0.5) <= shape.alpha_at_quantile(1)
+    counts = shape.classify_facets(a)
+    assert set(counts) == {"exterior", "singular", "regular", "interior"}
+    assert counts["regular"] > 0
+    vertices, faces, index = shape.surface()
+    assert vertices.dtype == np.float64 and faces.dtype == np.int64 and index.dtype == np.int64
+    assert len(vertices) == 2000 and len(faces) == 2 * 2000 - 4  # a closed sphere: V - E + F = 2
+    assert np.array_equal(vertices, points[index])
+    # outward: each face's normal along its centroid
+    p = vertices[faces]
+    face_normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    assert (np.einsum("ij,ij->i", face_normals, p.mean(axis=1)) > 0).all()
+    assert len(shape.surface(a, extraction="solid")[1]) == len(faces)
+
+
+def test_local_scales_change_the_filtration():
+    points, _ = fibonacci_sphere(500)
+    default = cas.ConformalAlphaShape(points).spectrum()
+    unit = cas.ConformalAlphaShape(points, local_scales=np.ones(500)).spectrum()
+    halved = cas.ConformalAlphaShape(points, local_scales=np.full(500, 0.5)).spectrum()
+    assert not np.array_equal(default, unit)
+    # a uniform local scale divides every value by the same factor
+    finite = np.isfinite(unit)
+    ratio = halved[finite] / unit[finite]
+    assert np.allclose(ratio, ratio[0], rtol=1e-9) and ratio[0] > 1
+
+
+def icosphere(subdivisions):
+    t = (1 + 5 ** 0.5) / 2
+    vertices = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+                (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5),
+             (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    vertices = [np.array(v) / np.linalg.norm(v) for v in vertices]
+    for _ in range(subdivisions):
+        middle = {}
+
+        def mid(i, j):
+            key = (min(i, j), max(i, j))
+            if key not in middle:
+                m = vertices[i] + vertices[j]
+                vertices.append(m / np.linalg.norm(m))
+                middle[key] = len(vertices) - 1
+            return middle[key]
+
+        faces = [f for a, b, c in faces
+                 for f in ((a, mid(a, b), mid(c, a)), (b, mid(b, c), mid(a, b)), (c, mid(c, a), mid(b, c)),
+                           (mid(a, b), mid(b, c), mid(c, a)))]
+    return np.array(vertices), np.array(faces)
+
+
+def test_vertex_curvatures_of_a_mesh():
+    vertices, faces = icosphere(4)
+    for kwargs in ({}, {"rings": 2}, {"radius": 0.2}, {"estimator": "paper"}):
+        layer = cas.vertex_curvatures(3 * vertices, faces, **kwargs)
+        assert np.abs(layer.H - 1 / 3).max() < 0.01, kwargs
+        assert np.abs(np.einsum("ij,ij->i", layer.normal, vertices) - 1).max() < 1e-3
+        assert layer.source is None and "source" not in layer.keys()
+    inverted = cas.vertex_curvatures(vertices, faces[:, ::-1])
+    assert (inverted.H < 0).all()
+
+
+def test_noise_and_denoise():
+    points, normals, _ = ellipsoid(20000, (1.0, 1.0, 1.0), noise=0.0)
+    spacing = cas.estimate_noise(points).spacing
+    noisy, _, _ = ellipsoid(20000, (1.0, 1.0, 1.0), noise=0.3 * spacing)
+    estimate = cas.estimate_noise(noisy)
+    assert isinstance(estimate, float) and abs(estimate - 0.3) < 0.05 and estimate.calls_for_denoising
+    smoothed = cas.denoise(noisy)
+    assert smoothed.shape == noisy.shape and smoothed is not noisy
+    before = np.abs(np.linalg.norm(noisy, axis=1) - 1).mean()
+    after = np.abs(np.linalg.norm(smoothed, axis=1) - 1).mean()
+    assert after < 0.5 * before
+    assert np.array_equal(cas.denoise(noisy, neighbors=30), cas.denoise(noisy, 30))
+
+
+def test_read_point_cloud():
+    points, normals = cas.read_point_cloud(__import__("conftest").test_data("kitten.xyz"))
+    assert points.shape == normals.shape and points.shape[1] == 3 and len(points) > 1000
+    expected = np.loadtxt(__import__("conftest").test_data("kitten.xyz"))
+    assert np.array_equal(points, expected[:, :3]) and np.array_equal(normals, expected[:, 3:])
+
+
+def test_help_shows_docstrings():
+    for function in (cas.multiscale_curvatures, cas.ConformalAlphaShape, cas.ConformalAlphaShape.surface,
+                     cas.vertex_curvatures, cas.estimate_noise, cas.denoise, cas.Result.write_ply,
+                     cas.Result.to_structured, cas.read_point_cloud):
+        assert function.__doc__ and len(function.__doc__) > 60, function
+    assert "Parameters" in cas.multiscale_curvatures.__doc__ and "Raises" in cas.multiscale_curvatures.__doc__
