@@ -5,7 +5,7 @@ progress bar, save the values as the program's curvatures.ply and, when
 Debian's python3-matplotlib is installed, a picture of the mean curvature.
 
     PYTHONPATH=build/python /usr/bin/python3 \
-        examples/Conformal_alpha_shapes_3/python/curvature_of_a_scan.py [points.xyz] [output_folder]
+        examples/Conformal_alpha_shapes_3/python/curvature_of_a_scan.py [points] [output_folder]
 """
 import os
 import sys
@@ -46,9 +46,11 @@ def save_picture(points, result, layer, path):
 
 
 def main():
-    source = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "data", "bunny_5000.xyz")
     output = sys.argv[2] if len(sys.argv) > 2 else "curvature_of_a_scan_out"
-    points = np.loadtxt(source)[:, :3]
+    if len(sys.argv) > 1:  # any format the program reads: .xyz, .pwn, .ply, .off, .obj
+        points, _ = cas.read_point_cloud(sys.argv[1])
+    else:  # the bundled bunny: a line with the number of points, then x y z per line
+        points = np.loadtxt(os.path.join(HERE, "..", "data", "bunny_5000.xyz"), skiprows=1)
     result = cas.multiscale_curvatures(points, progress=text_bar)
     print(f"{len(points)} points, spacing {result.spacing:.4g}, noise {result.noise:.3f} spacings, "
           f"layers {', '.join(result.layers)}")
