@@ -18,7 +18,7 @@ def required_path(variable, what):
     return path
 
 
-def test_data(name):
+def scan_path(name):
     return required_path("CAS3_TEST_DATA", "the folder of libcgal-demo's scans") + "/" + name
 
 

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import conformal_alpha_shapes as cas
-from conftest import ellipsoid, required_path, test_data
+from conftest import ellipsoid, required_path, scan_path
 
 
 def program_output(input_path, folder, *options):
@@ -49,9 +49,9 @@ def test_bunny_ply_and_csv(tmp_path):
 @pytest.mark.parametrize("name", ["kitten.xyz", "building.ply"])
 @pytest.mark.parametrize("with_normals", [True, False], ids=["normals", "points only"])
 def test_scans(tmp_path, name, with_normals):
-    points, normals = cas.read_point_cloud(test_data(name))
+    points, normals = cas.read_point_cloud(scan_path(name))
     assert normals is not None
-    path = test_data(name)
+    path = scan_path(name)
     if not with_normals:
         path = tmp_path / "points.xyz"
         np.savetxt(path, points, fmt="%.17g")
