@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import conformal_alpha_shapes as cas
-from conftest import ellipsoid, fibonacci_sphere
+from conftest import ellipsoid, fibonacci_sphere, scan_path
 
 
 @pytest.fixture(scope="module")
@@ -161,9 +161,9 @@ def test_noise_and_denoise():
 
 
 def test_read_point_cloud():
-    points, normals = cas.read_point_cloud(__import__("conftest").scan_path("kitten.xyz"))
+    points, normals = cas.read_point_cloud(scan_path("kitten.xyz"))
     assert points.shape == normals.shape and points.shape[1] == 3 and len(points) > 1000
-    expected = np.loadtxt(__import__("conftest").scan_path("kitten.xyz"))
+    expected = np.loadtxt(scan_path("kitten.xyz"))
     assert np.array_equal(points, expected[:, :3]) and np.array_equal(normals, expected[:, 3:])
 
 
