@@ -2,8 +2,9 @@
 // arrays in, the library's public functions, numpy arrays out. Argument
 // shapes and types are checked by the Python half (conformal_alpha_shapes/
 // __init__.py) and again here, so that this module never crashes on what a
-// caller passes. The GIL is released while the library computes; between
-// steps the computation stops for Ctrl-C and reports its progress.
+// caller passes. The GIL is released while the library computes, which
+// stops on Ctrl-C (without_gil) and reports its progress between steps.
+#include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -80,6 +81,40 @@ private:
   std::optional<tbb::global_control> m_control;
 #endif
 };
+
+// Runs `work()` with the GIL released, and stops it on Ctrl-C: the
+// library's loops call the check below every 20 ms or so on this thread
+// (interruption.h); it takes the GIL, and when Python has a signal's
+// exception (KeyboardInterrupt) asks the library to stop, which unwinds
+// `work()` with Interrupted, turned back into the Python exception here.
+template <class Work>
+auto without_gil(Work work)
+{
+  std::unique_ptr<py::error_already_set> pending;
+  const CAS3::Scoped_interruption_check check([&pending] {
+    py::gil_scoped_acquire gil;
+    if(PyErr_CheckSignals() == 0)
+      return false;
+    pending = std::make_unique<py::error_already_set>();
+    return true;
+  });
+  try
+  {
+    auto result = [&] {
+      py::gil_scoped_release release;
+      return work();
+    }();
+    if(pending)  // asked to stop as the work ended
+      throw py::error_already_set(*pending);
+    return result;
+  }
+  catch(const CAS3::Interrupted&)
+  {
+    if(pending)
+      throw py::error_already_set(*pending);
+    throw;
+  }
+}
 
 // Called by the computation, with the GIL released, between its steps: takes
 // the GIL, raises KeyboardInterrupt (as a C++ exception that unwinds the
@@ -238,8 +273,7 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
 
   py::list layers;
   std::unique_ptr<Analysis> analysis;
-  {
-    py::gil_scoped_release release;
+  without_gil([&] {
     step("conformal alpha shape");
     const auto np = CAS3::parameters::reference_normals(std::cref(normals),
       CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
@@ -274,7 +308,8 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
       }
     }
     checkpoint("done", 1.0);
-  }
+    return 0;
+  });
   py::array_t<bool> outlier = new_array<bool>(points.size());
   for(std::size_t i = 0; i < points.size(); ++i)
     outlier.mutable_data()[i] = analysis->is_outlier(i);
@@ -396,12 +431,12 @@ public:
         throw py::value_error("local_scales must be an (N,) array, one value per point");
       scales.assign(local_scales->data(), local_scales->data() + points.size());
     }
-    py::gil_scoped_release release;
     m_shape = std::make_unique<Shape>();
-    if(local_scales)
-      m_shape->make_conformal_alpha_shape(points.begin(), points.end(), CAS3::parameters::local_scales(scales));
-    else
-      m_shape->make_conformal_alpha_shape(points.begin(), points.end());
+    without_gil([&] {
+      return local_scales ? m_shape->make_conformal_alpha_shape(points.begin(), points.end(),
+                                                                CAS3::parameters::local_scales(scales))
+                          : m_shape->make_conformal_alpha_shape(points.begin(), points.end());
+    });
   }
 
   py::array_t<double> spectrum() const
@@ -415,10 +450,11 @@ public:
   double suggest_scale(const std::string& extraction, std::optional<double> coverage) const
   {
     const CAS3::Surface_extraction method = extraction_named(extraction);
-    py::gil_scoped_release release;
-    return coverage ? CAS3::suggest_scale(*m_shape, CAS3::parameters::coverage(*coverage,
-                                                                   CAS3::parameters::surface_extraction(method)))
-                    : CAS3::suggest_scale(*m_shape, CAS3::parameters::surface_extraction(method));
+    return without_gil([&] {
+      return coverage ? CAS3::suggest_scale(*m_shape, CAS3::parameters::coverage(
+                                                        *coverage, CAS3::parameters::surface_extraction(method)))
+                      : CAS3::suggest_scale(*m_shape, CAS3::parameters::surface_extraction(method));
+    });
   }
 
   py::dict classify_facets(double a) const
@@ -440,13 +476,12 @@ public:
   {
     const CAS3::Surface_extraction method = extraction_named(extraction);
     Surface mesh;
-    {
-      py::gil_scoped_release release;
+    without_gil([&] {
       const double scale = a ? *a : CAS3::suggest_scale(*m_shape, CAS3::parameters::surface_extraction(method));
       auto index = mesh.add_property_map<Surface::Vertex_index, std::size_t>("v:input_index").first;
-      CAS3::extract_surface(*m_shape, scale, mesh, CAS3::parameters::vertex_input_index_map(
-                                                     index, CAS3::parameters::surface_extraction(method)));
-    }
+      return CAS3::extract_surface(*m_shape, scale, mesh, CAS3::parameters::vertex_input_index_map(
+                                                            index, CAS3::parameters::surface_extraction(method)));
+    });
     return mesh_arrays(mesh);
   }
 
@@ -512,12 +547,10 @@ py::dict vertex_curvatures(const Doubles& vertices_array,
       throw py::value_error("faces: face " + std::to_string(i) +
                             " cannot be added to an oriented 2-manifold with the faces before it");
   }
-  std::vector<CAS3::Vertex_curvature<K> > values;
-  {
-    py::gil_scoped_release release;
-    values = CAS3::estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
+  const std::vector<CAS3::Vertex_curvature<K> > values = without_gil([&] {
+    return CAS3::estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
       mesh, std::vector<CAS3::Neighborhood>{neighborhood}, CAS3::parameters::estimator(method)).front();
-  }
+  });
   const std::size_t n = values.size();
   py::array_t<double> normal = new_triples(n), d1 = new_triples(n), d2 = new_triples(n);
   py::array_t<double> H = new_array<double>(n), Kg = new_array<double>(n), k1 = new_array<double>(n),
@@ -549,11 +582,7 @@ py::dict vertex_curvatures(const Doubles& vertices_array,
 py::dict estimate_noise(const Doubles& points_array)
 {
   const std::vector<Point> points = to_triples<Point>(points_array, "points");
-  CAS3::Noise_estimate e;
-  {
-    py::gil_scoped_release release;
-    e = CAS3::estimate_noise(points);
-  }
+  const CAS3::Noise_estimate e = without_gil([&] { return CAS3::estimate_noise(points); });
   py::dict d;
   d["noise"] = e.noise;
   d["noise_24"] = e.noise_24;
@@ -567,12 +596,12 @@ py::array_t<double> denoise(const Doubles& points_array, std::optional<int> neig
   std::vector<Point> points = to_triples<Point>(points_array, "points");
   if(neighbors && *neighbors < 7)
     throw py::value_error("denoise: neighbors must be >= 7, got " + std::to_string(*neighbors));
-  {
-    py::gil_scoped_release release;
+  without_gil([&] {
     const CAS3::Denoising_plan plan =
       CAS3::denoising_plan(CAS3::estimate_noise(points), CAS3::ALWAYS_DENOISE, neighbors ? unsigned(*neighbors) : 0u);
     CAS3::denoise(points, plan);
-  }
+    return plan.passes;
+  });
   py::array_t<double> out = new_triples(points.size());
   for(std::size_t i = 0; i < points.size(); ++i)
     put_triple(out.mutable_data(), i, points[i] - CGAL::ORIGIN);

@@ -227,6 +227,9 @@ public:
   triangulation. With `local_scales`, also when a scale is not finite and
   positive (the message names its index) or when the range of scales is not
   as long as the input.
+  \throws Conformal_alpha_shapes_3::Interrupted, leaving the shape empty, when
+  the calling thread's `Conformal_alpha_shapes_3::Scoped_interruption_check`
+  asks it to stop.
   */
   template <class InputIterator, class NamedParameters = parameters::Default_named_parameters>
   size_type make_conformal_alpha_shape(InputIterator first, InputIterator last,
@@ -241,35 +244,43 @@ public:
     const CAS3::Local_scale_estimator estimator = choose_parameter(
       get_parameter(np, CAS3::internal_np_cas3::local_scale_estimator), CAS3::NOISE_ROBUST_POLE_DISTANCE);
 
-    insert_points(first, last);
-    // the passes below run over the cells by index: listed once
-    const std::vector<Cell_handle> cells = index_cells();
-    std::vector<Point> centers;
-    if(!CAS3::internal::store_cell_values(*this, cells, centers))
+    try
     {
-      clear();
-      throw std::invalid_argument("Conformal_alpha_shape_3: a circumcenter or circumradius of the Delaunay "
-                                  "tetrahedra overflows or underflows in double, or divides by a "
-                                  "determinant that is 0 in double (tetrahedra or triangles flat to "
-                                  "rounding, of very different sizes); normalize the coordinates and "
-                                  "remove far outliers");
-    }
-    const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, cells, centers);
-    for(Vertex_handle v : this->finite_vertex_handles())
-    {
-      v->set_pole_cell(poles[v->vertex_index()].cell);
-      v->set_local_scale(poles[v->vertex_index()].distance);
-    }
-    if constexpr(!parameters::is_default_parameter<NamedParameters,
-                                                   CAS3::internal_np_cas3::local_scales_t>::value)
-    {
-      set_caller_scales(get_parameter(np, CAS3::internal_np_cas3::local_scales));
-    }
-    else if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
-    {
-      const std::vector<double> floors = CAS3::internal::local_scale_floors(*this, cells);
+      insert_points(first, last);
+      // the passes below run over the cells by index: listed once
+      const std::vector<Cell_handle> cells = index_cells();
+      std::vector<Point> centers;
+      if(!CAS3::internal::store_cell_values(*this, cells, centers))
+      {
+        clear();
+        throw std::invalid_argument("Conformal_alpha_shape_3: a circumcenter or circumradius of the Delaunay "
+                                    "tetrahedra overflows or underflows in double, or divides by a "
+                                    "determinant that is 0 in double (tetrahedra or triangles flat to "
+                                    "rounding, of very different sizes); normalize the coordinates and "
+                                    "remove far outliers");
+      }
+      const std::vector<Pole> poles = CAS3::internal::compute_poles(*this, cells, centers);
       for(Vertex_handle v : this->finite_vertex_handles())
-        v->set_local_scale((std::max)(v->local_scale(), floors[v->vertex_index()]));
+      {
+        v->set_pole_cell(poles[v->vertex_index()].cell);
+        v->set_local_scale(poles[v->vertex_index()].distance);
+      }
+      if constexpr(!parameters::is_default_parameter<NamedParameters,
+                                                     CAS3::internal_np_cas3::local_scales_t>::value)
+      {
+        set_caller_scales(get_parameter(np, CAS3::internal_np_cas3::local_scales));
+      }
+      else if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
+      {
+        const std::vector<double> floors = CAS3::internal::local_scale_floors(*this, cells);
+        for(Vertex_handle v : this->finite_vertex_handles())
+          v->set_local_scale((std::max)(v->local_scale(), floors[v->vertex_index()]));
+      }
+    }
+    catch(const CAS3::Interrupted&)
+    {
+      clear();  // a shape is whole or empty
+      throw;
     }
     return m_input_vertices.size();
   }
@@ -718,8 +729,11 @@ private:
     // handles was a cache miss each
     std::vector<size_type> vertex_index_of_input(order.size());
     Vertex_handle hint;
+    CAS3::internal::Interruption_point interruption;
     for(const std::pair<Point, size_type>& p : order)
     {
+      if(this->number_of_vertices() % 1024 == 0)
+        interruption.throw_if_stopped();
       const size_type before = this->number_of_vertices();
       hint = Dt::insert(p.first, hint);
       if(this->number_of_vertices() > before)

@@ -14,7 +14,7 @@ Arrays are numpy arrays: points are (N, 3), float64 (other real dtypes and
 non-contiguous arrays are converted). Lengths and curvatures are in the
 units of the points. The computations release the GIL, report their
 progress to an optional ``progress(stage, fraction)`` callable and stop
-with ``KeyboardInterrupt`` on Ctrl-C between their steps.
+with ``KeyboardInterrupt`` on Ctrl-C.
 """
 
 import numbers
@@ -266,7 +266,7 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
             that do not span 3D (fewer than 4 distinct, coplanar), a scale or
             radius out of range, an unknown option, wrong shapes.
         TypeError: arrays that are not of real numbers, options of the wrong type.
-        KeyboardInterrupt: Ctrl-C, between two steps of the computation.
+        KeyboardInterrupt: Ctrl-C (within a fraction of a second, the work unwound).
     """
     points = _triples(points, "points")
     if normals is not None:

@@ -94,16 +94,21 @@ inline double facet_tie_breaker(std::size_t u, std::size_t v, std::size_t w)
 
 // The front's priority: the conformal value of a facet (infinite facets and
 // the cells the front creates have an infinite value: never taken); no seed
-// is taken once seeding has stopped.
+// is taken once seeding has stopped. The front calls it for every candidate
+// facet, on the thread that runs it: where it may be interrupted.
 template <class Cas>
 struct Conformal_priority
 {
   const Cas* shape;
   Front_seeding* seeding;
+  Interruption_point* interruption;
+  std::size_t* calls;
 
   template <class AdvancingFront, class Cell_handle>
   double operator()(const AdvancingFront& front, Cell_handle& c, const int& i) const
   {
+    if(++*calls % 1024 == 0)
+      interruption->throw_if_stopped();
     const double value = copied_facet_value(*shape, c->info().shape_cell, i);
     const bool seed = c->vertex((i + 1) & 3)->is_exterior() && c->vertex((i + 2) & 3)->is_exterior()
                       && c->vertex((i + 3) & 3)->is_exterior();
@@ -200,7 +205,9 @@ Advancing_front_soup front_triangles(const Cas& cas)
   Front_triangulation triangulation(cas.geom_traits());
   copy_triangulation(cas, triangulation, no_vertex);
   Front_seeding seeding(cas.number_of_vertices());
-  Front front(triangulation, Conformal_priority<Cas>{&cas, &seeding});
+  Interruption_point interruption;
+  std::size_t calls = 0;
+  Front front(triangulation, Conformal_priority<Cas>{&cas, &seeding, &interruption, &calls});
   front.run();
 
   // CGAL's surface holds its faces in the order it created them (a fresh

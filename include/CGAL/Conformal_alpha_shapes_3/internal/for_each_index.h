@@ -10,6 +10,7 @@
 // Either way the results do not depend on the tag or on the number of
 // threads.
 
+#include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 
@@ -32,10 +33,12 @@ namespace internal {
 
 // Calls body(i, workspace) for every i in [0, n), which writes only the
 // results of index i; `make_workspace()` makes the buffers of one thread
-// (one workspace in a serial run).
+// (one workspace in a serial run). Throws `Interrupted` when the calling
+// thread's interruption check asks it to stop (interruption.h).
 template <typename ConcurrencyTag, typename MakeWorkspace, typename Body>
 void for_each_index(std::size_t n, MakeWorkspace make_workspace, Body body)
 {
+  Interruption_point interruption;
 #ifndef CGAL_LINKED_WITH_TBB
   static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
                 "Parallel_tag is enabled but TBB is unavailable.");
@@ -44,16 +47,23 @@ void for_each_index(std::size_t n, MakeWorkspace make_workspace, Body body)
   {
     tbb::enumerable_thread_specific<decltype(make_workspace())> workspaces(make_workspace);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256), [&](const tbb::blocked_range<std::size_t>& range) {
+      if(interruption.stop_requested())
+        return;
       auto& workspace = workspaces.local();
       for(std::size_t i = range.begin(); i != range.end(); ++i)
         body(i, workspace);
     });
+    interruption.throw_if_stop_was_requested();
     return;
   }
 #endif
   auto workspace = make_workspace();
   for(std::size_t i = 0; i < n; ++i)
+  {
+    if(i % 256 == 0)
+      interruption.throw_if_stopped();
     body(i, workspace);
+  }
 }
 
 // Calls body(begin, end, partial) on contiguous chunks of [0, n), one per
