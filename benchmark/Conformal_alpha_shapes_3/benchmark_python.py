@@ -12,6 +12,10 @@ The cloud is a noisy ellipsoid (noise 0.1 sample spacings along the normals),
 written as .xyz and read by both through the program's reader. Both run with
 glibc.malloc.hugetlb=1 (the program sets it for itself; the Python process
 gets it from the environment) unless --default-malloc.
+
+With --interrupt T1,T2,...: instead, Ctrl-C latency: a call per T, SIGINT
+sent T seconds after it starts, the time from the signal to the
+KeyboardInterrupt printed.
 """
 import argparse
 import json
@@ -37,6 +41,26 @@ returned = sum(r[n][k].nbytes for n in r.layers for k in r[n].keys()) + r.outlie
 print(json.dumps({"call": call, "call_cpu": call_cpu, "call_and_write": total,
                   "peak_mib": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
                   "returned_mib": returned / 2**20}))
+"""
+
+
+INTERRUPT_CHILD = r"""
+import os, signal, sys, threading, time
+import conformal_alpha_shapes as cas
+points, normals = cas.read_point_cloud(sys.argv[1])
+stages = []
+for delay in map(float, sys.argv[2].split(",")):
+    sent = []
+    timer = threading.Timer(delay, lambda: (sent.append(time.perf_counter()), os.kill(os.getpid(), signal.SIGINT)))
+    timer.start()
+    try:
+        cas.multiscale_curvatures(points, progress=lambda stage, f: stages.append(stage))
+    except KeyboardInterrupt:
+        stopped = time.perf_counter()
+        print(f"SIGINT at {delay:6.1f} s (during '{stages[-1]}'): KeyboardInterrupt {stopped - sent[0]:.3f} s later",
+              flush=True)
+    timer.join()
+    stages = []
 """
 
 
@@ -71,6 +95,7 @@ def main():
     parser.add_argument("--noise", type=float, default=0.1, help="in sample spacings")
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--default-malloc", action="store_true")
+    parser.add_argument("--interrupt", help="comma list of seconds after the start of a call to send SIGINT")
     args = parser.parse_args()
     env = dict(os.environ)
     if not args.default_malloc:
@@ -78,6 +103,9 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         source = os.path.join(folder, "cloud.xyz")
         np.savetxt(source, ellipsoid(args.points, args.noise), fmt="%.17g")
+        if args.interrupt:
+            subprocess.run([sys.executable, "-c", INTERRUPT_CHILD, source, args.interrupt], check=True, env=env)
+            return
         rows = []
         for k in range(args.repeat):
             program = run_program(args.program, source, os.path.join(folder, "program"), env)
