@@ -28,6 +28,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace py = pybind11;
@@ -153,31 +154,39 @@ void put_triple(double* p, std::size_t i, const Vector& v)
   p[3 * i + 2] = v.z();
 }
 
-// A layer of per-point values (Point_curvature) as a dict of numpy arrays.
-py::dict point_layer(const std::vector<CAS3::Point_curvature<K> >& values)
+// A layer as a dict of numpy arrays: normal, H, K, k1, k2, d1, d2, radius of
+// each value (a Point_curvature or a mesh's Vertex_curvature), and for
+// points their source and distance.
+template <class Value>
+py::dict layer_arrays(const std::vector<Value>& values)
 {
+  constexpr bool of_points = std::is_same<Value, CAS3::Point_curvature<K> >::value;
   const std::size_t n = values.size();
   py::array_t<double> normal = new_triples(n), d1 = new_triples(n), d2 = new_triples(n);
   py::array_t<double> H = new_array<double>(n), Kg = new_array<double>(n), k1 = new_array<double>(n),
-                      k2 = new_array<double>(n), radius = new_array<double>(n), distance = new_array<double>(n);
-  py::array_t<std::uint8_t> source = new_array<std::uint8_t>(n);
+                      k2 = new_array<double>(n), radius = new_array<double>(n);
   double *pn = normal.mutable_data(), *p1 = d1.mutable_data(), *p2 = d2.mutable_data();
   double *pH = H.mutable_data(), *pK = Kg.mutable_data(), *pk1 = k1.mutable_data(), *pk2 = k2.mutable_data();
-  double *pr = radius.mutable_data(), *pd = distance.mutable_data();
-  std::uint8_t* ps = source.mutable_data();
+  double* pr = radius.mutable_data();
   for(std::size_t i = 0; i < n; ++i)
   {
-    const CAS3::Point_curvature<K>& c = values[i];
+    const Value& c = values[i];
     put_triple(pn, i, c.normal);
     put_triple(p1, i, c.principal.max_direction);
     put_triple(p2, i, c.principal.min_direction);
-    pH[i] = c.mean_curvature;
-    pK[i] = c.gaussian_curvature;
+    if constexpr(of_points)
+    {
+      pH[i] = c.mean_curvature;
+      pK[i] = c.gaussian_curvature;
+    }
+    else
+    {
+      pH[i] = c.mean_curvature();
+      pK[i] = c.gaussian_curvature();
+    }
     pk1[i] = c.principal.max_curvature;
     pk2[i] = c.principal.min_curvature;
     pr[i] = c.radius;
-    pd[i] = c.distance;
-    ps[i] = std::uint8_t(c.source);
   }
   py::dict layer;
   layer["normal"] = normal;
@@ -188,8 +197,18 @@ py::dict point_layer(const std::vector<CAS3::Point_curvature<K> >& values)
   layer["d1"] = d1;
   layer["d2"] = d2;
   layer["radius"] = radius;
-  layer["source"] = source;
-  layer["distance"] = distance;
+  if constexpr(of_points)
+  {
+    py::array_t<double> distance = new_array<double>(n);
+    py::array_t<std::uint8_t> source = new_array<std::uint8_t>(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      distance.mutable_data()[i] = values[i].distance;
+      source.mutable_data()[i] = std::uint8_t(values[i].source);
+    }
+    layer["source"] = source;
+    layer["distance"] = distance;
+  }
   return layer;
 }
 
@@ -295,7 +314,7 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
         const std::string label = cas3::layer_label(scale, o.neighborhoods[r], o.scales.size() > 1);
         {
           py::gil_scoped_acquire gil;
-          py::dict layer = point_layer(values[r]);
+          py::dict layer = layer_arrays(values[r]);
           layer["name"] = label;
           layer["a"] = a;
           layer["description"] = cas3::layer_description(*analysis, a, scale, o.neighborhoods[r], label);
@@ -551,32 +570,7 @@ py::dict vertex_curvatures(const Doubles& vertices_array,
     return CAS3::estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
       mesh, std::vector<CAS3::Neighborhood>{neighborhood}, CAS3::parameters::estimator(method)).front();
   });
-  const std::size_t n = values.size();
-  py::array_t<double> normal = new_triples(n), d1 = new_triples(n), d2 = new_triples(n);
-  py::array_t<double> H = new_array<double>(n), Kg = new_array<double>(n), k1 = new_array<double>(n),
-                      k2 = new_array<double>(n), used = new_array<double>(n);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const CAS3::Vertex_curvature<K>& c = values[i];
-    put_triple(normal.mutable_data(), i, c.normal);
-    put_triple(d1.mutable_data(), i, c.principal.max_direction);
-    put_triple(d2.mutable_data(), i, c.principal.min_direction);
-    H.mutable_data()[i] = c.mean_curvature();
-    Kg.mutable_data()[i] = c.gaussian_curvature();
-    k1.mutable_data()[i] = c.principal.max_curvature;
-    k2.mutable_data()[i] = c.principal.min_curvature;
-    used.mutable_data()[i] = c.radius;
-  }
-  py::dict layer;
-  layer["normal"] = normal;
-  layer["H"] = H;
-  layer["K"] = Kg;
-  layer["k1"] = k1;
-  layer["k2"] = k2;
-  layer["d1"] = d1;
-  layer["d2"] = d2;
-  layer["radius"] = used;
-  return layer;
+  return layer_arrays(values);
 }
 
 py::dict estimate_noise(const Doubles& points_array)
