@@ -33,6 +33,8 @@ const std::vector<Point>& sample()
 // A check that asks to stop at its `stop_at`-th call, recording its threads.
 struct Counting_check
 {
+  explicit Counting_check(std::size_t stop) : stop_at(stop) {}
+
   std::size_t stop_at;
   std::size_t calls = 0;
   std::set<std::thread::id> threads;
@@ -54,7 +56,7 @@ BOOST_AUTO_TEST_SUITE(interruption)
 
 BOOST_AUTO_TEST_CASE(a_stop_at_the_first_check_stops_the_construction_and_empties_the_shape)
 {
-  Counting_check check{1};
+  Counting_check check(1);
   Analysis::Shape shape;
   {
     const CAS3::Scoped_interruption_check scope(check.function());
@@ -72,14 +74,14 @@ BOOST_AUTO_TEST_CASE(the_front_and_the_curvature_passes_stop)
 {
   Analysis::Shape shape(sample().begin(), sample().end());
   {
-    Counting_check check{1};
+    Counting_check check(1);
     const CAS3::Scoped_interruption_check scope(check.function());
     BOOST_CHECK_THROW(CAS3::Surface_front<Analysis::Shape> front(shape), CAS3::Interrupted);
   }
   const CAS3::Surface_front<Analysis::Shape> front(shape);
   Analysis::Surface surface;
   front.extract_surface(front.suggest_scale(), surface);
-  Counting_check check{1};
+  Counting_check check(1);
   const CAS3::Scoped_interruption_check scope(check.function());
   BOOST_CHECK_THROW(CAS3::estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
                       surface, std::vector<CAS3::Neighborhood>{CAS3::Neighborhood::rings(2)}),
@@ -89,7 +91,7 @@ BOOST_AUTO_TEST_CASE(the_front_and_the_curvature_passes_stop)
 BOOST_AUTO_TEST_CASE(a_check_that_never_stops_changes_nothing_and_runs_on_the_calling_thread)
 {
   const std::vector<CAS3::Curvature_layer<K> > plain = CAS3::multiscale_curvatures(sample());
-  Counting_check check{std::size_t(-1)};
+  Counting_check check(std::size_t(-1));
   std::vector<CAS3::Curvature_layer<K> > checked;
   {
     const CAS3::Scoped_interruption_check scope(check.function());
@@ -110,7 +112,7 @@ BOOST_AUTO_TEST_CASE(a_check_that_never_stops_changes_nothing_and_runs_on_the_ca
 
 BOOST_AUTO_TEST_CASE(checks_nest)
 {
-  Counting_check outer{std::size_t(-1)}, inner{1};
+  Counting_check outer(std::size_t(-1)), inner(1);
   const CAS3::Scoped_interruption_check outer_scope(outer.function());
   {
     const CAS3::Scoped_interruption_check inner_scope(inner.function());
