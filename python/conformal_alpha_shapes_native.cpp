@@ -12,6 +12,7 @@
 #include "cas3_curvature_options.h"
 #include "cas3_curvature_output.h"
 #include "cas3_layer_names.h"
+#include "cas3_malloc_policy.h"
 #include "cas3_read_point_cloud.h"
 
 #include <pybind11/numpy.h>
@@ -306,6 +307,7 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
       const double a = analysis->scale_value(scale);
       Surface surface;
       const CAS3::Surface_report report = analysis->surface(a, surface);
+      cas3::return_freed_memory();  // as the program does: the front's copy was freed mid-heap
       step("curvature at scale " + cas3::scale_text(scale));
       std::vector<std::vector<CAS3::Point_curvature<K> > > values =
         analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);

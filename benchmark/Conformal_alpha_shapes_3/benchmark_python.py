@@ -10,8 +10,9 @@ compared byte for byte.
 
 The cloud is a noisy ellipsoid (noise 0.1 sample spacings along the normals),
 written as .xyz and read by both through the program's reader. Both run with
-glibc.malloc.hugetlb=1 (the program sets it for itself; the Python process
-gets it from the environment) unless --default-malloc.
+the program's allocator policy, glibc.malloc.hugetlb=1 and one malloc arena
+(the program sets them for itself; the Python process gets them from the
+environment: GLIBC_TUNABLES and MALLOC_ARENA_MAX) unless --default-malloc.
 
 With --interrupt T1,T2,...: instead, Ctrl-C latency: a call per T, SIGINT
 sent T seconds after it starts, the time from the signal to the
@@ -100,6 +101,7 @@ def main():
     env = dict(os.environ)
     if not args.default_malloc:
         env["GLIBC_TUNABLES"] = "glibc.malloc.hugetlb=1"
+        env["MALLOC_ARENA_MAX"] = "1"
     with tempfile.TemporaryDirectory() as folder:
         source = os.path.join(folder, "cloud.xyz")
         np.savetxt(source, ellipsoid(args.points, args.noise), fmt="%.17g")
