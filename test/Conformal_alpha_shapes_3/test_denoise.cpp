@@ -56,6 +56,7 @@ BOOST_AUTO_TEST_CASE(denoise_matches_cgal_jet_smoothing)
   BOOST_TEST((serial == parallel));
 #endif
 }
+
 // Neighborhoods whose quadratic is not determined leave their points in
 // place (never NaN): coincident points (smoothed once, as one: the fuzz
 // finding denoise_jet_fit_on_duplicates), points on a line, points on one
@@ -110,6 +111,7 @@ BOOST_AUTO_TEST_CASE(denoise_leaves_degenerate_neighborhoods_in_place)
     largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(smoothed[i], plane[i])));
   BOOST_TEST(largest < 1e-12);
 }
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_denoise

@@ -49,6 +49,7 @@ BOOST_AUTO_TEST_CASE(noise_estimate)
   }
   BOOST_TEST(CAS3::estimate_noise(std::vector<Point>(10, Point(0, 0, 0))).noise == 0);
 }
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_estimate_noise

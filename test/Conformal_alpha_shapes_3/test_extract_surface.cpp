@@ -145,6 +145,10 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
 
 BOOST_AUTO_TEST_SUITE(extract_surface)
 
+// Two parts, which ctest runs as two tests side by side: the solid
+// boundary, and the advancing front with the orientation of its sheets.
+BOOST_AUTO_TEST_SUITE(solid_boundary)
+
 // At every quantile, whatever the solid looks like (below the closing scale,
 // a sponge of small pockets that pinch at vertices), the output is a valid
 // closed oriented manifold mesh.
@@ -182,6 +186,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(every_scale_gives_a_manifold, Mesh, Mesh_types)
   }
   BOOST_TEST(pinched > 0u);  // the pockets below the closing scale were split
 }
+
 BOOST_AUTO_TEST_CASE(degenerate_scales_and_shapes)
 {
   const auto pts = cas3_test::ellipsoid_sample<Point>(2000, 1.0, 0.7, 0.4);
@@ -215,6 +220,7 @@ BOOST_AUTO_TEST_CASE(degenerate_scales_and_shapes)
   BOOST_TEST(report.number_of_faces == 4u);
   BOOST_TEST(PMP::volume(four) == 1.0 / 6.0, boost::test_tools::tolerance(1e-12));
 }
+
 // The paper's central claim: on a sample whose density follows the local
 // feature size (a torus R = 1, r = 0.9, whose hole has radius 0.1: 81x
 // denser around the hole), the conformal surface is a closed torus, while
@@ -260,6 +266,11 @@ BOOST_AUTO_TEST_CASE(conformal_scales_succeed_where_every_global_alpha_fails)
   BOOST_TEST(closed_surfaces > sweep / 4);  // the sweep reached the closed surfaces
   BOOST_TEST(tori == 0u);
 }
+
+BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(advancing_front)
+
 // Every vertex of the advancing-front surface is its input point, the mesh
 // is a valid oriented manifold, and on clean closed samples nearly every
 // point is on one outward sheet.
@@ -295,6 +306,7 @@ BOOST_AUTO_TEST_CASE(advancing_front_surface_on_clean_closed_samples)
     BOOST_TEST(CAS3::extract_surface(cas, 0.0, none).empty());
   }
 }
+
 // Noise of 0.1 and 0.3 spacings along the normal: the points are smoothed,
 // and the surface is one outward sheet (today's solid boundary had an inner
 // wall there, facing half of the points inwards).
@@ -313,6 +325,7 @@ BOOST_AUTO_TEST_CASE(noisy_closed_surface_is_one_outward_sheet)
     }
   }
 }
+
 // A single view of a surface (a cap), clean and noisy: one consistently
 // oriented sheet with a border, not a two-sided slab, pointing away from
 // the center of its vertices, which lies under the cap: outwards.
@@ -332,6 +345,7 @@ BOOST_AUTO_TEST_CASE(open_cap_is_one_sheet_pointing_away_from_the_center)
     }
   }
 }
+
 // Open sheets that continue each other across a gap that the front does
 // not bridge are oriented alike: the two floors of a step whose riser was
 // not sampled (the square [-1, 1]^2 without the strip |x| < 0.05, a gap of
@@ -367,6 +381,7 @@ BOOST_AUTO_TEST_CASE(open_sheets_across_a_gap_agree)
   // scene's)
   BOOST_TEST(facts.cone > 0);
 }
+
 // An open sheet that nearly closes round its own center points out of it:
 // on oni.pwn given as x y z only, a blob of 25 points (a hole of 4 edges)
 // faced inwards, joined to the body's sheet beside it (96.6% of the
@@ -381,6 +396,7 @@ BOOST_AUTO_TEST_CASE(nearly_closed_open_sheets_point_out_of_their_center)
   BOOST_TEST(!facts.report.oriented_by_reference_normals);
   BOOST_TEST(facts.agreement >= 0.98);
 }
+
 // libcgal-demo's scans at 4 spacings (the manual, "Measured: Scans Without
 // Their Normals" and "Measured: Advancing Front against the Solid
 // Boundary"; evaluate_surfaces --case kitten,oni,ball,building
@@ -448,6 +464,7 @@ BOOST_AUTO_TEST_CASE(real_scans_with_and_without_their_normals)
     }
   }
 }
+
 // Given normals decide the orientation, against the default rule: a noisy
 // cap and a noisy closed ellipsoid given inward normals face inwards (the
 // default points both outwards), and so do the values of every point (the
@@ -491,6 +508,9 @@ BOOST_AUTO_TEST_CASE(orientation_follows_input_normals)
   BOOST_TEST(scan.coverage >= 0.97);
   BOOST_TEST(scan.agreement >= 0.97);
 }
+
+BOOST_AUTO_TEST_SUITE_END()
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_extract_surface

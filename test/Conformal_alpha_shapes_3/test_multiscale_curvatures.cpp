@@ -144,6 +144,7 @@ BOOST_AUTO_TEST_CASE(automatic_radius_under_noise_against_jet_fitting)
     }
   }
 }
+
 // The bump test (the manual's bump figures), clean 20,000-point spheres:
 // the finest layer (1 ring) reads fine bumps (amplitude 0.005, frequency 40)
 // with a median H error of 35.4% against 47.3% for jet fitting at its best
@@ -188,6 +189,7 @@ BOOST_AUTO_TEST_CASE(finest_and_coarsest_layers_of_the_bump_test_against_jet_fit
     }
   }
 }
+
 // A radius in model units means the same on two samplings of one surface:
 // on a bumpy sphere sampled at 4000 and 16000 points, mean curvature with a
 // 0.25 radius agrees between the two; with 2-rings (half the radius on the
@@ -247,6 +249,7 @@ BOOST_AUTO_TEST_CASE(a_radius_means_the_same_at_two_densities)
   BOOST_TEST(by_radius < 0.5 * by_rings);
   BOOST_TEST(by_large_radius < 0.05);
 }
+
 // The automatic neighborhood grows with the noise, from the data alone.
 // Without denoising, so that the noise the rule reads is the one the fits
 // see (measured: 3.1, 8.8 and 8.9 spacings; with the default denoising,
@@ -277,6 +280,7 @@ BOOST_AUTO_TEST_CASE(the_automatic_radius_grows_with_noise)
   BOOST_TEST(radius[1] <= radius[2]);
   BOOST_TEST(radius[0] < radius[2]);
 }
+
 // The results do not depend on the order of the points: a shuffled copy of
 // a noisy torus (smoothed, so the noise estimate and the smoothing are in
 // the path) gives the same scale and the same bits at every point, for a
@@ -312,6 +316,7 @@ BOOST_AUTO_TEST_CASE(any_order_of_the_points_gives_the_same_results)
     BOOST_TEST_CONTEXT("neighborhood " << l) { BOOST_TEST(differing == 0u); }
   }
 }
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_multiscale_curvatures

@@ -82,6 +82,7 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mes
   BOOST_TEST(s.report.number_of_points_off_surface == 0u);
   BOOST_TEST(s.volume == 2 * M_PI * M_PI * 0.64, boost::test_tools::tolerance(0.03));
 }
+
 // Radial noise: the surface stays a closed oriented manifold and holds
 // nearly every point, with either local scale.
 BOOST_AUTO_TEST_CASE(noisy_samples_stay_manifold)
@@ -101,6 +102,7 @@ BOOST_AUTO_TEST_CASE(noisy_samples_stay_manifold)
       BOOST_TEST(s.report.fraction_of_points_on_surface() >= 0.99);
     }
 }
+
 // Real scans (libcgal-demo's, and the bundled bunny) at the suggested scale:
 // the shares of points on the surface of the manual's table ("Measured",
 // solid boundary; 0.5 point of margin) on a closed surface of the right
@@ -132,6 +134,7 @@ BOOST_AUTO_TEST_CASE(real_scans)
     }
   }
 }
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_suggest_scale

@@ -87,6 +87,7 @@ BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
   }
   BOOST_TEST(wrong == 0u);
 }
+
 // The soup's canonical order depends on its triangles only, not on the
 // order, the vertex numbers or the orientation of each part that the front
 // gave (which follow memory addresses): a strip of two triangles and a
@@ -132,6 +133,7 @@ BOOST_AUTO_TEST_CASE(canonical_soup_order_ignores_how_the_front_gave_it)
   // the strip is one part: its triangles are neighbors
   BOOST_TEST(reference.neighbors[0][0] == 1u);
 }
+
 // The same on random soups: closed tetrahedra, open and closed fans, and
 // strips whose last soup vertex may stand for the shape vertex of their
 // first (as where the front met itself), each given in a random numbering,
@@ -254,6 +256,7 @@ BOOST_AUTO_TEST_CASE(canonical_soup_order_on_random_soups)
     }
   }
 }
+
 // The results do not depend on the heap layout for points in general
 // position. CGAL's advancing front orders its candidates of equal priority
 // by memory address; its ties between different facets (the manual, "The
@@ -287,6 +290,7 @@ BOOST_AUTO_TEST_CASE(the_heap_layout_does_not_change_the_results)
     }
   }
 }
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_surface_front

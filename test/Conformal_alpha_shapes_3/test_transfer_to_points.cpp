@@ -108,6 +108,7 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
   BOOST_TEST(nearest > 50u);
   BOOST_TEST(none > 50u);  // the cap's center is about 12 spacings from its rim
 }
+
 // With given normals, a point whose normal points to the other side of its
 // sheet gets the values seen from that side; the sheet keeps the majority's
 // orientation.
@@ -150,6 +151,7 @@ BOOST_AUTO_TEST_CASE(each_point_follows_its_given_normal)
   }
   BOOST_TEST(checked >= points.size() * 99 / 100);
 }
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_transfer_to_points
