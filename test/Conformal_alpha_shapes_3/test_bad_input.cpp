@@ -1,11 +1,9 @@
 // Bad and extreme input through the library: Conformal_alpha_shape_3's
 // range checks, the input hygiene stage (normalization, isolated outliers),
-// degenerate point sets through the whole pipeline and through denoise()
-// (with, for reference, its agreement with CGAL's jet_smooth_point_set() on
-// a regular noisy sample), and degenerate meshes for
-// estimate_vertex_curvatures. Each case asserts the exact outcome: the
-// error message fragment or the documented result.
-#define BOOST_TEST_MODULE test_bad_input
+// degenerate point sets through the whole pipeline, and degenerate meshes
+// for estimate_vertex_curvatures(). Each case asserts the exact outcome: the
+// error message fragment or the documented result. (denoise() on degenerate
+// neighborhoods: test_denoise.cpp.)
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shape_3.h>
@@ -16,7 +14,6 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OFF.h>
-#include <CGAL/jet_smooth_point_set.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -36,6 +33,10 @@
 #include <type_traits>
 #include <vector>
 
+// Every name of this file is in its own namespace: the test runner compiles
+// several test files as one translation unit.
+namespace test_bad_input {
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 typedef K::Vector_3 Vector;
@@ -45,8 +46,6 @@ typedef CGAL::Conformal_alpha_shape_3<CGAL::Delaunay_triangulation_3<K, Tds> > C
 typedef CGAL::Surface_mesh<Point> Mesh;
 namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
 typedef CAS3::internal::Normalized_input<K> Normalized;
-
-namespace {
 
 const double qnan = std::numeric_limits<double>::quiet_NaN();
 const double inf = std::numeric_limits<double>::infinity();
@@ -111,7 +110,7 @@ Answer pipeline(const std::vector<Point>& p)
   return a;
 }
 
-} // namespace
+BOOST_AUTO_TEST_SUITE(bad_input)
 
 // ---------------------------------------------------------------------------
 // Conformal_alpha_shape_3
@@ -414,95 +413,6 @@ BOOST_AUTO_TEST_CASE(duplicates_degenerate_sets_and_tiny_inputs_are_normalized_w
   BOOST_TEST(CAS3::internal::normalize_input<K>(slab).outliers.empty());
 }
 
-// denoise() smooths as CGAL's jet_smooth_point_set() with degree 2 jets
-// (its own fit, the same meaning): on a noisy sphere, one and two passes
-// agree to rounding.
-BOOST_AUTO_TEST_CASE(denoise_matches_cgal_jet_smoothing)
-{
-  const std::vector<Point> noisy = cas3_test::ellipsoid_sample<Point>(4000, 1, 0.8, 0.6, 0.01, 3, 1e-4);
-  const double spacing = std::sqrt(4 * M_PI * 0.8 / 4000.0);
-  for(unsigned int k : {24u, 50u})
-    for(int passes : {1, 2})
-    {
-      std::vector<Point> ours = noisy, cgal = noisy;
-      CAS3::denoise(ours, CAS3::Denoising_plan{k, passes});
-      for(int i = 0; i < passes; ++i)
-        CGAL::jet_smooth_point_set<CGAL::Sequential_tag>(cgal, k);
-      double largest = 0, moved = 0;
-      for(std::size_t i = 0; i < noisy.size(); ++i)
-      {
-        largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(ours[i], cgal[i])));
-        moved = (std::max)(moved, std::sqrt(CGAL::squared_distance(ours[i], noisy[i])));
-      }
-      BOOST_TEST_MESSAGE("k " << k << ", " << passes << " pass(es): largest difference to CGAL "
-                         << largest / spacing << " spacings, largest move " << moved / spacing);
-      BOOST_TEST(moved > 0.05 * spacing);
-      BOOST_TEST(largest < 1e-9 * spacing);
-    }
-#ifdef CGAL_LINKED_WITH_TBB
-  // in parallel, the serial result bit for bit
-  std::vector<Point> serial = noisy, parallel = noisy;
-  CAS3::internal::jet_smooth_points<CGAL::Sequential_tag>(serial, 40, 2);
-  CAS3::internal::jet_smooth_points<CGAL::Parallel_tag>(parallel, 40, 2);
-  BOOST_TEST((serial == parallel));
-#endif
-}
-
-// Neighborhoods whose quadratic is not determined leave their points in
-// place (never NaN): coincident points (smoothed once, as one: the fuzz
-// finding denoise_jet_fit_on_duplicates), points on a line, points on one
-// circle, an exact plane (the fit is exact: nothing moves).
-BOOST_AUTO_TEST_CASE(denoise_leaves_degenerate_neighborhoods_in_place)
-{
-  const CAS3::Denoising_plan plan{24, 2};
-  auto finite = [](const std::vector<Point>& p) {
-    return std::all_of(p.begin(), p.end(), [](const Point& q) {
-      return std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z());
-    });
-  };
-  // mostly copies of one point, and a few grid points (as the fuzz seed)
-  std::vector<Point> copies(40, Point(0.25, 0.5, 0.75));
-  for(int i = 0; i < 4; ++i)
-    for(int j = 0; j < 4; ++j)
-      copies.push_back(Point(i, j, (i + j) % 2));
-  std::vector<Point> smoothed = copies;
-  CAS3::denoise(smoothed, plan);  // 17 distinct points: fewer than 24 neighbors, nothing moves
-  BOOST_TEST((smoothed == copies));
-  for(int i = 0; i < 6; ++i)
-    for(int j = 0; j < 6; ++j)
-      copies.push_back(Point(i + 0.5, j + 0.25, 0.125 * ((i * j) % 3)));
-  smoothed = copies;
-  CAS3::denoise(smoothed, plan);
-  BOOST_TEST(finite(smoothed));
-  BOOST_TEST(std::all_of(smoothed.begin(), smoothed.begin() + 40, [&](const Point& q) { return q == smoothed[0]; }));
-  // on a line
-  std::vector<Point> line;
-  for(int i = 0; i < 100; ++i)
-    line.push_back(Point(0.1 * i, 0.2 * i, -0.3 * i));
-  smoothed = line;
-  CAS3::denoise(smoothed, plan);
-  BOOST_TEST((smoothed == line));
-  // on one circle: every neighborhood lies on a conic of its plane
-  std::vector<Point> circle;
-  for(int i = 0; i < 100; ++i)
-    circle.push_back(Point(std::cos(0.0628 * i), std::sin(0.0628 * i), 0.5));
-  smoothed = circle;
-  CAS3::denoise(smoothed, plan);
-  BOOST_TEST((smoothed == circle));
-  // an exact plane, tilted
-  std::vector<Point> plane;
-  for(int i = 0; i < 30; ++i)
-    for(int j = 0; j < 30; ++j)
-      plane.push_back(Point(i, j, 0.5 * i - 0.25 * j + 3));
-  smoothed = plane;
-  CAS3::denoise(smoothed, plan);
-  BOOST_TEST(finite(smoothed));
-  double largest = 0;
-  for(std::size_t i = 0; i < plane.size(); ++i)
-    largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(smoothed[i], plane[i])));
-  BOOST_TEST(largest < 1e-12);
-}
-
 BOOST_AUTO_TEST_CASE(mixed_huge_and_tiny_coordinates)
 {
   // a unit sphere with coordinates 1e-300 away from zero here and there,
@@ -520,8 +430,6 @@ BOOST_AUTO_TEST_CASE(mixed_huge_and_tiny_coordinates)
 
 // ---------------------------------------------------------------------------
 // estimate_vertex_curvatures on degenerate meshes
-
-namespace {
 
 struct Mesh_estimate
 {
@@ -571,8 +479,6 @@ std::string off_of(const std::vector<Point>& points, const std::vector<std::vect
     out << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
   return out.str();
 }
-
-} // namespace
 
 BOOST_AUTO_TEST_CASE(non_manifold_vertex_two_spheres_touching)
 {
@@ -710,3 +616,7 @@ BOOST_AUTO_TEST_CASE(isolated_vertices_are_nan_and_counted)
         BOOST_TEST(std::abs(e.H[i] - 0.5) < 0.05);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()
+
+} // namespace test_bad_input

@@ -112,6 +112,8 @@ void write_xyz(const fs::path& file, const std::vector<Point>& pts)
 
 } // namespace
 
+BOOST_AUTO_TEST_SUITE(conformal_curvature_program)
+
 // The default job: every point has finite values at every default layer,
 // in a binary PLY point cloud that reads back; the layers differ; the CSV
 // holds the same numbers and is at least three times larger.
@@ -794,3 +796,5 @@ BOOST_AUTO_TEST_CASE(renders_a_png_headless)
   BOOST_TEST(signature == std::string("\x89PNG\r\n\x1a\n"));
   BOOST_TEST(fs::file_size(png) > 200u);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

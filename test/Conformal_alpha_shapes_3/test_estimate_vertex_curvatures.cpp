@@ -1,6 +1,8 @@
-// Tests of estimate_vertex_curvatures on analytic surfaces with known
-// curvature, at three scales, on Surface_mesh and Polyhedron_3.
-#define BOOST_TEST_MODULE test_estimate_vertex_curvatures
+// Tests of estimate_vertex_curvatures() on analytic surfaces with known
+// curvature, at three scales, on Surface_mesh and Polyhedron_3, serial and
+// parallel. Curvature_estimator (curvature_estimator.h) and the named
+// parameters (named_parameters.h) are tested here. (Non-manifold, border
+// and isolated vertices: test_bad_input.cpp.)
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>
@@ -29,6 +31,10 @@
 #include <thread>
 #include <vector>
 
+// Every name of this file is in its own namespace: the test runner compiles
+// several test files as one translation unit.
+namespace test_estimate_vertex_curvatures {
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 typedef K::Vector_3 Vector;
@@ -38,8 +44,6 @@ typedef boost::mpl::list<Surface_mesh, Polyhedron> Mesh_types;
 
 namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
 typedef CAS3::Principal_curvatures_and_directions<K> Principal;
-
-namespace {
 
 // Per-vertex results of one run, in vertex order.
 template <class Mesh>
@@ -127,7 +131,7 @@ std::pair<double, double> sphere_errors(const Mesh& mesh, double r, int rings, C
   return {quantile(eh, 0.5), quantile(ek, 0.5)};
 }
 
-} // namespace
+BOOST_AUTO_TEST_SUITE(estimate_vertex_curvatures)
 
 // Bounds: h_bound() on H, twice that on K (the quadric fit: 1.2% on K, the
 // upper end of its 0.7-1.1%, 10% above), at 1 and 2 rings (Euler least
@@ -394,8 +398,6 @@ BOOST_AUTO_TEST_CASE(combined_named_parameters)
     BOOST_TEST(h_map[v] == 0.5, boost::test_tools::tolerance(0.02));
 }
 
-namespace {
-
 // Every output of one run at every vertex of `mesh`, as bits: two runs
 // agree when these are equal.
 template <class ConcurrencyTag, class NamedParameters>
@@ -441,8 +443,6 @@ Surface_mesh rough_sphere(std::size_t n)
   return mesh;
 }
 
-} // namespace
-
 #ifdef CGAL_LINKED_WITH_TBB
 // Tests of the parallel path: built only with TBB (without it, the
 // "parallel" run would be the serial run compared with itself); CI's Release
@@ -463,8 +463,6 @@ BOOST_AUTO_TEST_CASE(parallel_run_matches_the_serial_run_bit_for_bit)
   check(CAS3::parameters::neighborhood_radius(0.08));
   check(CAS3::parameters::neighborhood_radii(radii));
 }
-
-namespace {
 
 // A vertex point map that records the threads reading it once it has been
 // read `serial_reads` times (the positions are first copied serially, one
@@ -506,8 +504,6 @@ struct Thread_recording_point_map
     return map.mesh->point(v);
   }
 };
-
-} // namespace
 
 // estimate_vertex_curvatures<CGAL::Parallel_tag> runs on several threads
 // (the vertex point map is read in the parallel loops), with the serial
@@ -619,3 +615,7 @@ BOOST_AUTO_TEST_CASE(large_radius_on_a_sphere_is_unbiased)
   BOOST_TEST_MESSAGE("sphere, radius 0.5: median |H - 1| " << quantile(errors, 0.5));
   BOOST_TEST(quantile(errors, 0.5) < 0.005);
 }
+
+BOOST_AUTO_TEST_SUITE_END()
+
+} // namespace test_estimate_vertex_curvatures

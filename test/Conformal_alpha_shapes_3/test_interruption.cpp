@@ -1,7 +1,6 @@
 // Tests of interruption.h: a check that asks to stop stops the construction,
 // the front and the per-vertex passes with Interrupted; a check that never
 // does changes nothing; the check is called on the calling thread only.
-#define BOOST_TEST_MODULE test_interruption
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
@@ -12,21 +11,30 @@
 #include "cas3_test_shapes.h"
 
 #include <cstddef>
+#include <functional>
 #include <mutex>
 #include <set>
 #include <thread>
 #include <vector>
+
+// Every name of this file is in its own namespace: the test runner compiles
+// several test files as one translation unit.
+namespace test_interruption {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
 typedef CAS3::Multiscale_curvatures<K> Analysis;
 
-namespace {
-
+// Large enough for the loops to reach their checks; smaller under the sanitizers.
 const std::vector<Point>& sample()
 {
-  static const std::vector<Point> points = cas3_test::ellipsoid_sample<Point>(20000, 1.5, 1.0, 0.75, 0.002);
+#ifdef CAS3_SANITIZED
+  const std::size_t n = 4000;
+#else
+  const std::size_t n = 20000;
+#endif
+  static const std::vector<Point> points = cas3_test::ellipsoid_sample<Point>(n, 1.5, 1.0, 0.75, 0.002);
   return points;
 }
 
@@ -49,8 +57,6 @@ struct Counting_check
     };
   }
 };
-
-} // namespace
 
 BOOST_AUTO_TEST_SUITE(interruption)
 
@@ -124,3 +130,5 @@ BOOST_AUTO_TEST_CASE(checks_nest)
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+} // namespace test_interruption

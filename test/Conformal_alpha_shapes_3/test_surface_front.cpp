@@ -1,0 +1,296 @@
+// Tests of Surface_front, the advancing front that extract_surface() and
+// suggest_scale() grow by default: how its triangle soup pairs neighbors
+// and puts itself in a canonical order, and results that do not depend on
+// the heap layout (through Multiscale_curvatures).
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+#include <CGAL/Conformal_alpha_shapes_3/surface_front.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include "cas3_analytic_surfaces.h"
+#include "cas3_point_values.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
+
+// Every name of this file is in its own namespace: the test runner compiles
+// several test files as one translation unit.
+namespace test_surface_front {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
+typedef CGAL::Conformal_alpha_shapes_3::Multiscale_curvatures<K> Analysis;
+namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using cas3_test::same_bits;
+using cas3_test::sheet_points;
+
+// Shuffles the heap's free memory: blocks of the small sizes the front
+// allocates, allocated, then two thirds of them freed in a random order
+// (the rest is returned, to be freed after the run that follows).
+std::vector<void*> scramble_the_heap(unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::vector<void*> blocks, kept;
+  for(std::size_t size = 16; size <= 256; size += 8)
+    for(int i = 0; i < 4000; ++i)
+      blocks.push_back(std::malloc(size));
+  std::shuffle(blocks.begin(), blocks.end(), random);
+  for(std::size_t i = 0; i < blocks.size(); ++i)
+    if(i % 3 == 0)
+      kept.push_back(blocks[i]);
+    else
+      std::free(blocks[i]);
+  return kept;
+}
+
+BOOST_AUTO_TEST_SUITE(surface_front)
+
+// The soup's neighbors are paired as CGAL's advancing-front surface pairs
+// its faces: on an edge, the first triangle with the second, the third with
+// the fourth, and a fifth is left with a border there; around a vertex of
+// high degree too.
+BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
+{
+  CAS3::internal::Advancing_front_soup soup;
+  soup.shape_vertex = {0, 1, 2, 3, 4, 5, 6, 7};
+  soup.triangles = {{{0, 1, 2}}, {{1, 0, 3}}, {{0, 1, 4}}, {{1, 0, 5}}, {{0, 1, 6}}, {{2, 1, 7}}};
+  soup.values.assign(soup.triangles.size(), 1.);
+  CAS3::internal::pair_neighbors(soup);
+  const std::size_t o = CAS3::internal::Advancing_front_soup::no_neighbor;
+  const std::vector<std::array<std::size_t, 3> > expected = {
+    {{5, o, 1}}, {{o, o, 0}}, {{o, o, 3}}, {{o, o, 2}}, {{o, o, o}}, {{o, o, 0}}};
+  BOOST_TEST((soup.neighbors == expected));
+
+  // a closed fan of 1,000 triangles around vertex 0: each spoke joins two
+  // triangles, the rim is a border
+  const std::size_t n = 1000;
+  CAS3::internal::Advancing_front_soup fan;
+  fan.shape_vertex.resize(n + 1);
+  for(std::size_t i = 0; i < n; ++i)
+    fan.triangles.push_back({{0, i + 1, (i + 1) % n + 1}});
+  fan.values.assign(n, 1.);
+  CAS3::internal::pair_neighbors(fan);
+  std::size_t wrong = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<std::size_t, 3> around = {{o, (i + 1) % n, (i + n - 1) % n}};
+    wrong += fan.neighbors[i] == around ? 0 : 1;
+  }
+  BOOST_TEST(wrong == 0u);
+}
+
+// The soup's canonical order depends on its triangles only, not on the
+// order, the vertex numbers or the orientation of each part that the front
+// gave (which follow memory addresses): a strip of two triangles and a
+// lone triangle, given both ways, come out the same.
+BOOST_AUTO_TEST_CASE(canonical_soup_order_ignores_how_the_front_gave_it)
+{
+  typedef std::array<std::size_t, 3> Triangle;
+  // triangles over shape vertices, with their values
+  const std::vector<Triangle> strip_and_lone = {{{0, 1, 2}}, {{2, 1, 3}}, {{4, 5, 6}}};
+  const std::vector<double> values = {1., 2., 3.};
+  auto canonical = [&](bool renumbered, bool reversed, bool strip_turned, bool lone_turned) {
+    CAS3::internal::Advancing_front_soup soup;
+    for(std::size_t v = 0; v < 7; ++v)
+      soup.shape_vertex.push_back(renumbered ? 6 - v : v);
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t t = reversed ? 2 - i : i;
+      Triangle triangle = strip_and_lone[t];
+      for(std::size_t& v : triangle)
+        v = renumbered ? 6 - v : v;
+      if((strip_turned && t < 2) || (lone_turned && t == 2))
+        std::swap(triangle[1], triangle[2]);
+      soup.triangles.push_back(triangle);
+      soup.values.push_back(values[t]);
+    }
+    CAS3::internal::pair_neighbors(soup);
+    CAS3::internal::put_in_canonical_order(soup);
+    return soup;
+  };
+  const CAS3::internal::Advancing_front_soup reference = canonical(false, false, false, false);
+  for(int variant = 1; variant < 16; ++variant)
+  {
+    const CAS3::internal::Advancing_front_soup other =
+      canonical(variant & 1, variant & 2, variant & 4, variant & 8);
+    BOOST_TEST_CONTEXT("variant " << variant)
+    {
+      BOOST_TEST((other.shape_vertex == reference.shape_vertex));
+      BOOST_TEST((other.triangles == reference.triangles));
+      BOOST_TEST((other.neighbors == reference.neighbors));
+      BOOST_TEST((other.values == reference.values));
+    }
+  }
+  // the strip is one part: its triangles are neighbors
+  BOOST_TEST(reference.neighbors[0][0] == 1u);
+}
+
+// The same on random soups: closed tetrahedra, open and closed fans, and
+// strips whose last soup vertex may stand for the shape vertex of their
+// first (as where the front met itself), each given in a random numbering,
+// triangle order, rotation and orientation of each part. The canonical soup
+// also keeps every neighbor across its edge, running the other way.
+BOOST_AUTO_TEST_CASE(canonical_soup_order_on_random_soups)
+{
+  typedef std::array<std::size_t, 3> Triangle;
+  typedef CAS3::internal::Advancing_front_soup Soup;
+  std::mt19937 random(5);
+  auto below = [&](std::size_t n) { return std::size_t(random() % n); };
+  for(int trial = 0; trial < 300; ++trial)
+  {
+    std::vector<std::vector<Triangle> > parts;  // over soup vertices
+    std::vector<std::size_t> shape_vertex;      // by soup vertex
+    auto vertex = [&]() {
+      shape_vertex.push_back(shape_vertex.size());
+      return shape_vertex.size() - 1;
+    };
+    for(std::size_t p = 0, n = 1 + below(4); p < n; ++p)
+    {
+      std::vector<Triangle> part;
+      const std::size_t kind = below(3);
+      if(kind == 0)
+      {
+        const std::size_t a = vertex(), b = vertex(), c = vertex(), d = vertex();
+        part = {{{a, b, c}}, {{a, d, b}}, {{b, d, c}}, {{a, c, d}}};
+      }
+      else if(kind == 1)
+      {
+        const std::size_t center = vertex(), k = 3 + below(4);
+        std::vector<std::size_t> rim(k);
+        for(std::size_t& v : rim)
+          v = vertex();
+        for(std::size_t i = 0, triangles = below(2) ? k : k - 1; i < triangles; ++i)
+          part.push_back({{center, rim[i], rim[(i + 1) % k]}});
+      }
+      else
+      {
+        const std::size_t length = 2 + below(3);
+        std::vector<std::size_t> a(length + 1), b(length + 1);
+        for(std::size_t i = 0; i <= length; ++i)
+        {
+          a[i] = vertex();
+          b[i] = vertex();
+        }
+        for(std::size_t i = 0; i < length; ++i)
+        {
+          part.push_back({{a[i], b[i], a[i + 1]}});
+          part.push_back({{b[i], b[i + 1], a[i + 1]}});
+        }
+        if(below(2))
+          shape_vertex[b[length]] = shape_vertex[a[0]];
+      }
+      parts.push_back(part);
+    }
+
+    auto canonical = [&](bool as_built) {
+      std::vector<std::size_t> number(shape_vertex.size());
+      std::iota(number.begin(), number.end(), std::size_t(0));
+      if(!as_built)
+        std::shuffle(number.begin(), number.end(), random);
+      Soup soup;
+      soup.shape_vertex.resize(shape_vertex.size());
+      for(std::size_t v = 0; v < shape_vertex.size(); ++v)
+        soup.shape_vertex[number[v]] = shape_vertex[v];
+      std::vector<std::pair<Triangle, double> > given;
+      for(const std::vector<Triangle>& part : parts)
+      {
+        const bool turned = !as_built && below(2) == 1;
+        for(Triangle t : part)
+        {
+          for(std::size_t& v : t)
+            v = number[v];
+          if(turned)
+            std::swap(t[1], t[2]);
+          if(!as_built)
+            std::rotate(t.begin(), t.begin() + std::ptrdiff_t(below(3)), t.end());
+          given.emplace_back(t, double(given.size()));
+        }
+      }
+      if(!as_built)
+        std::shuffle(given.begin(), given.end(), random);
+      for(const std::pair<Triangle, double>& t : given)
+      {
+        soup.triangles.push_back(t.first);
+        soup.values.push_back(t.second);
+      }
+      CAS3::internal::pair_neighbors(soup);
+      CAS3::internal::put_in_canonical_order(soup);
+      return soup;
+    };
+
+    const Soup reference = canonical(true);
+    std::size_t wrong = 0;
+    for(std::size_t t = 0; t < reference.triangles.size(); ++t)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t n = reference.neighbors[t][k];
+        if(n == Soup::no_neighbor)
+          continue;
+        const std::size_t a = reference.triangles[t][(k + 1) % 3], b = reference.triangles[t][(k + 2) % 3];
+        bool back = false;
+        for(int j = 0; j < 3; ++j)
+          back = back || (reference.triangles[n][(j + 1) % 3] == b && reference.triangles[n][(j + 2) % 3] == a
+                          && reference.neighbors[n][j] == t);
+        wrong += back ? 0 : 1;
+      }
+    BOOST_TEST_CONTEXT("trial " << trial)
+    {
+      BOOST_TEST(wrong == 0u);
+      for(int variant = 0; variant < 4; ++variant)
+      {
+        const Soup other = canonical(false);
+        BOOST_TEST((other.shape_vertex == reference.shape_vertex));
+        BOOST_TEST((other.triangles == reference.triangles));
+        BOOST_TEST((other.neighbors == reference.neighbors));
+        BOOST_TEST((other.values == reference.values));
+      }
+    }
+  }
+}
+
+// The results do not depend on the heap layout for points in general
+// position. CGAL's advancing front orders its candidates of equal priority
+// by memory address; its ties between different facets (the manual, "The
+// Program": exact ties of fold angles or of values, as on lattices) are
+// the exception. On a noisy torus the same bits come out after the heap's
+// free memory was shuffled, three ways.
+BOOST_AUTO_TEST_CASE(the_heap_layout_does_not_change_the_results)
+{
+  Sample s = cas3_analytic::torus_truth_sample<Point, Vector>(sheet_points / 2, 1.0, 0.35);
+  cas3_analytic::add_normal_noise(s, 0.1, 5);
+  const std::vector<CAS3::Neighborhood> neighborhoods{CAS3::Neighborhood::rings(2), CAS3::Neighborhood::automatic()};
+  auto run = [&]() {
+    const Analysis analysis(s.points.begin(), s.points.end());
+    Analysis::Surface surface;
+    analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+    return analysis.estimate_curvatures(surface, neighborhoods);
+  };
+  const auto reference = run();
+  for(unsigned seed : {1u, 2u, 3u})
+  {
+    const std::vector<void*> kept = scramble_the_heap(seed);
+    const auto layers = run();
+    for(void* block : kept)
+      std::free(block);
+    for(std::size_t l = 0; l < neighborhoods.size(); ++l)
+    {
+      std::size_t differing = 0;
+      for(std::size_t i = 0; i < s.points.size(); ++i)
+        differing += same_bits(reference[l][i], layers[l][i]) ? 0 : 1;
+      BOOST_TEST_CONTEXT("heap shuffled with seed " << seed << ", neighborhood " << l) { BOOST_TEST(differing == 0u); }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+} // namespace test_surface_front

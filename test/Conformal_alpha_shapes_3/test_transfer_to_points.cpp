@@ -1,0 +1,157 @@
+// Tests of transfer_to_points(), through Multiscale_curvatures: the values
+// of the points off the surface (those of the nearest surface point, or
+// none when far) and of points whose given normal faces the other side.
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+#include <CGAL/Conformal_alpha_shapes_3/transfer_to_points.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include "cas3_point_values.h"
+#include "cas3_test_shapes.h"
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cmath>
+#include <vector>
+
+// Every name of this file is in its own namespace: the test runner compiles
+// several test files as one translation unit.
+namespace test_transfer_to_points {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef CGAL::Conformal_alpha_shapes_3::Multiscale_curvatures<K> Analysis;
+namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using cas3_test::same_bits;
+
+BOOST_AUTO_TEST_SUITE(transfer_to_points)
+
+// Points that are not vertices take the values of the nearest surface point:
+// on a unit sphere whose surface lost a cap, H = 1 and the normal is radial
+// there too; points farther than the documented multiple of the spacing
+// have no value.
+BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
+{
+  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(4000, 1, 1, 1);
+  const Analysis analysis(pts.begin(), pts.end());
+  Analysis::Surface surface;
+  analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+  // remove the cap z > 0.8 from the surface
+  std::vector<Analysis::Surface::Face_index> cap;
+  for(auto f : surface.faces())
+    for(auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+      if(surface.point(v).z() > 0.8)
+      {
+        cap.push_back(f);
+        break;
+      }
+  for(auto f : cap)
+    CGAL::Euler::remove_face(surface.halfedge(f), surface);
+  surface.collect_garbage();
+
+  const std::vector<CAS3::Point_curvature<K> > c =
+    analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
+#ifdef CGAL_LINKED_WITH_TBB
+  {
+    // on one thread, the same bits: the points on their own vertex are
+    // filled in parallel, the others serially
+    tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+    const std::vector<CAS3::Point_curvature<K> > serial =
+      analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
+    std::size_t differing = 0;
+    for(std::size_t i = 0; i < c.size(); ++i)
+      differing += same_bits(c[i], serial[i]) ? 0 : 1;
+    BOOST_TEST(differing == 0u);
+  }
+#endif
+  std::size_t own = 0, nearest = 0, none = 0;
+  const double spacing = std::sqrt(4 * M_PI / 4000);
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const K::Vector_3 radial = (pts[i] - CGAL::ORIGIN) / std::sqrt((pts[i] - CGAL::ORIGIN).squared_length());
+    BOOST_TEST_INFO("point " << i << " at z = " << pts[i].z() << ", distance " << c[i].distance);
+    switch(c[i].source)
+    {
+      case CAS3::SURFACE_VERTEX:
+        ++own;
+        BOOST_REQUIRE(c[i].distance == 0);
+        break;
+      case CAS3::NEAREST_SURFACE_POINT:
+        ++nearest;
+        BOOST_REQUIRE(pts[i].z() > 0.75);
+        // the distance to the rim of the cut surface, about 1 - z's height
+        BOOST_REQUIRE(c[i].distance > 0);
+        BOOST_REQUIRE(std::abs(c[i].mean_curvature - 1) < 0.03);
+        BOOST_REQUIRE(std::abs(c[i].gaussian_curvature - 1) < 0.06);
+        // the normal of the nearest surface point: radial there, at an
+        // angle of about the distance from the point's own radial direction
+        BOOST_TEST_INFO("normal . radial " << c[i].normal * radial << ", H " << c[i].mean_curvature);
+        BOOST_REQUIRE(c[i].normal * radial > std::cos(c[i].distance) - 0.01);
+        BOOST_REQUIRE(std::abs(c[i].principal.max_direction * c[i].normal) < 1e-9);
+        break;
+      case CAS3::NO_VALUE:
+        ++none;
+        BOOST_REQUIRE(pts[i].z() > 0.8);
+        BOOST_REQUIRE(c[i].distance > 2 * spacing);  // far: at least a few spacings
+        BOOST_REQUIRE(std::isnan(c[i].mean_curvature));
+        break;
+    }
+  }
+  BOOST_TEST_MESSAGE("own vertex " << own << ", nearest surface point " << nearest << ", no value " << none);
+  BOOST_TEST(nearest > 50u);
+  BOOST_TEST(none > 50u);  // the cap's center is about 12 spacings from its rim
+}
+
+// With given normals, a point whose normal points to the other side of its
+// sheet gets the values seen from that side; the sheet keeps the majority's
+// orientation.
+BOOST_AUTO_TEST_CASE(each_point_follows_its_given_normal)
+{
+  const std::vector<Point> points = cas3_test::ellipsoid_sample<Point>(4000, 1, 1, 1);
+  std::vector<Vector> given;
+  std::vector<bool> flipped;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    flipped.push_back(i % 10 == 3);
+    const Vector outward = points[i] - CGAL::ORIGIN;
+    given.push_back(flipped.back() ? -outward : outward);
+  }
+  const Analysis analysis(points.begin(), points.end(), CAS3::parameters::reference_normals(given));
+  Analysis::Surface surface;
+  analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+  const auto values = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::spacings(4)}).front();
+  auto index = surface.property_map<Analysis::Surface_vertex, std::size_t>("v:input_index").first;
+  auto normal = surface.property_map<Analysis::Surface_vertex, Vector>("v:normal").first;
+  std::size_t outward_sheet = 0;
+  for(Analysis::Surface_vertex v : surface.vertices())
+    outward_sheet += normal[v] * (points[index[v]] - CGAL::ORIGIN) > 0 ? 1 : 0;
+  BOOST_TEST(outward_sheet == surface.number_of_vertices());
+  std::size_t checked = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const CAS3::Point_curvature<K>& c = values[i];
+    if(!c.on_surface())
+      continue;
+    ++checked;
+    const double side = flipped[i] ? -1 : 1;
+    BOOST_TEST_INFO("point " << i);
+    BOOST_REQUIRE(c.normal * given[i] > 0);
+    BOOST_REQUIRE(std::abs(c.mean_curvature - side) < 0.05);
+    BOOST_REQUIRE(std::abs(c.gaussian_curvature - 1) < 0.1);
+    BOOST_REQUIRE(c.principal.max_curvature >= c.principal.min_curvature);
+    const Vector d1_x_d2 = CGAL::cross_product(c.principal.max_direction, c.principal.min_direction);
+    BOOST_REQUIRE(d1_x_d2 * c.normal > 0.99);
+  }
+  BOOST_TEST(checked >= points.size() * 99 / 100);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+} // namespace test_transfer_to_points
