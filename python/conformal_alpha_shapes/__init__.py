@@ -152,7 +152,6 @@ class Result:
     def __init__(self, points, native):
         self._points = points
         self._layers = {values["name"]: Layer(values) for values in native["layers"]}
-        self._native_layers = native["layers"]
         self.layers = tuple(self._layers)
         self.outlier = native["outlier"]
         self.spacing = native["spacing"]
@@ -214,7 +213,8 @@ class Result:
         handle, temporary = tempfile.mkstemp(prefix=".", suffix=".ply.part", dir=folder)
         os.close(handle)
         try:
-            _native.write_point_cloud(temporary, self._points, self.outlier, self._native_layers)
+            _native.write_point_cloud(temporary, self._points, self.outlier,
+                                      [vars(self[name]) for name in self.layers])
             os.replace(temporary, path)
         except BaseException:
             os.unlink(temporary)

@@ -137,7 +137,7 @@ def test_write_ply_never_leaves_a_half_written_file(tmp_path):
     r = cas.multiscale_curvatures(POINTS, radii=("4s",))
     with pytest.raises(OSError):
         r.write_ply(tmp_path / "missing_folder" / "curvatures.ply")
-    r._native_layers[0]["H"] = r._native_layers[0]["H"][:10]  # a broken result: the writer refuses it
+    r["r4s"].H = r["r4s"].H[:10]  # a broken result: the writer refuses it
     with pytest.raises(ValueError, match="H has not one value per point"):
         r.write_ply(tmp_path / "curvatures.ply")
     assert os.listdir(tmp_path) == []
