@@ -47,11 +47,12 @@ status=0
 grep -E '^(Done|stat::number_of_executed_units|stat::new_units_added|stat::average_exec_per_sec)' "$log" || true
 
 # the corpus minimized against the seeds: a merge into a copy of the seeds
-# adds only the inputs that reach coverage the seeds do not
+# adds only the inputs that reach code the seeds do not (edges only, not
+# hit counts, so that the seed folder stays small)
 rm -rf "$merged" "$merged.all"
 mkdir -p "$merged.all"
 cp "$seeds"/* "$merged.all"/
-"$fuzzer" -merge=1 -max_len=4096 "$merged.all" "$corpus" > "$dir/long_run_${target}_merge.log" 2>&1
+"$fuzzer" -merge=1 -use_counters=0 -max_len=4096 "$merged.all" "$corpus" > "$dir/long_run_${target}_merge.log" 2>&1
 mkdir -p "$merged"
 for f in "$merged.all"/*; do
   [ -e "$seeds/$(basename "$f")" ] || cp "$f" "$merged"/
