@@ -271,7 +271,8 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
                                const std::vector<std::string>& scales, const std::vector<std::string>& radii,
                                const std::vector<std::string>& rings, const std::string& estimator,
                                const std::string& denoise, const std::string& denoise_neighbors,
-                               const std::string& extraction, int threads, py::object progress)
+                               const std::string& extraction, int threads, py::object progress,
+                               std::optional<double> given_spacing, std::optional<double> given_noise)
 {
   const Job_options o =
     read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
@@ -297,10 +298,16 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
     step("conformal alpha shape");
     const auto np = CAS3::parameters::reference_normals(std::cref(normals),
       CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
-    analysis = o.denoising_neighbors > 0
-      ? std::make_unique<Analysis>(points.begin(), points.end(),
-                                   CAS3::parameters::denoising_neighbors(o.denoising_neighbors, np))
-      : std::make_unique<Analysis>(points.begin(), points.end(), np);
+    auto analyze = [&](const auto& with_noise) {
+      return o.denoising_neighbors > 0
+        ? std::make_unique<Analysis>(points.begin(), points.end(),
+                                     CAS3::parameters::denoising_neighbors(o.denoising_neighbors, with_noise))
+        : std::make_unique<Analysis>(points.begin(), points.end(), with_noise);
+    };
+    // the decisions of a larger run (the Python layer gives both or neither)
+    analysis = given_spacing ? analyze(CAS3::parameters::noise_estimate(
+                                    CAS3::Noise_estimate{*given_spacing, *given_noise, *given_noise}, np))
+                             : analyze(np);
     for(const CAS3::Scale& scale : o.scales)
     {
       step("surface at scale " + cas3::scale_text(scale));
@@ -611,7 +618,8 @@ PYBIND11_MODULE(_native, m)
   m.doc() = "The compiled part of conformal_alpha_shapes; use the package, not this module.";
   m.def("multiscale_curvatures", &multiscale_curvatures, py::arg("points"), py::arg("normals"),
         py::arg("scales"), py::arg("radii"), py::arg("rings"), py::arg("estimator"), py::arg("denoise"),
-        py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"));
+        py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"),
+        py::arg("spacing"), py::arg("noise"));
   m.def("write_point_cloud", &write_point_cloud);
   m.def("read_point_cloud", &read_point_cloud);
   m.def("vertex_curvatures", &vertex_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("rings"),

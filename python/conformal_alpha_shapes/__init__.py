@@ -223,7 +223,7 @@ class Result:
 
 def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("auto", "2s", "4s", "8s", "16s"),
                           rings=(), estimator="quadric", denoise="auto", denoise_neighbors=None,
-                          extraction="front", threads=None, progress=None):
+                          extraction="front", threads=None, progress=None, spacing=None, noise=None):
     """Curvature of every point of a cloud at several scales: the program's job.
 
     The points are checked, recentered and rescaled, isolated far outliers
@@ -257,6 +257,15 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
             are the same with any number.
         progress: optional callable ``progress(stage, fraction)``, called
             between steps with a stage name and the fraction done in [0, 1].
+        spacing, noise: the decisions of a larger run, both or neither: the
+            sample spacing (in units of the points) and the noise (in
+            spacings) of the whole cloud these points are part of, as
+            ``r.spacing`` and ``r.noise`` of a run on it (e.g. when each tile
+            of a cloud is run alone). They are used instead of an estimate
+            on these points: for radii in spacings ("4s"), the "auto" radius,
+            the noise level of the fits and the "auto" denoising decision.
+            Given a run's own ``r.spacing`` and ``r.noise``, a run on the same
+            points gives the same values to the last bit.
 
     Returns:
         A ``Result``: ``r.layers`` the layer names, ``r[name]`` a ``Layer``.
@@ -264,10 +273,16 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
     Raises:
         ValueError: NaN or infinite coordinates (naming the index), points
             that do not span 3D (fewer than 4 distinct, coplanar), a scale or
-            radius out of range, an unknown option, wrong shapes.
+            radius out of range, an unknown option, wrong shapes, only one of
+            spacing and noise, a spacing not finite and > 0, a noise < 0 or NaN.
         TypeError: arrays that are not of real numbers, options of the wrong type.
         KeyboardInterrupt: Ctrl-C (within a fraction of a second, the work unwound).
     """
+    if (spacing is None) != (noise is None):
+        raise ValueError("spacing and noise are given together (the decisions of a larger run) or not at all")
+    for name, value in (("spacing", spacing), ("noise", noise)):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, numbers.Real)):
+            raise TypeError(f"{name} must be a float or None, got {value!r}")
     points = _triples(points, "points")
     if normals is not None:
         normals = _triples(normals, "normals")
@@ -286,7 +301,8 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
         _option_items(rings, "rings", integers=True),
         _choice(estimator, "estimator"), _choice(denoise, "denoise"),
         "" if denoise_neighbors is None else str(int(denoise_neighbors)),
-        _choice(extraction, "extraction"), _threads(threads), progress)
+        _choice(extraction, "extraction"), _threads(threads), progress,
+        None if spacing is None else float(spacing), None if noise is None else float(noise))
     return Result(points, native)
 
 

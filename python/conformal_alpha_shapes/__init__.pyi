@@ -51,6 +51,8 @@ def multiscale_curvatures(
     extraction: str = ...,
     threads: Optional[int] = ...,
     progress: Optional[Callable[[str, float], object]] = ...,
+    spacing: Optional[float] = ...,
+    noise: Optional[float] = ...,
 ) -> Result: ...
 
 class ConformalAlphaShape:

@@ -48,6 +48,23 @@ def test_noisy_ellipsoid_outward_and_accurate():
     assert np.median(relative) < 0.02 and np.percentile(relative, 99) < 0.06
 
 
+def test_spacing_and_noise_of_a_larger_run():
+    # noisy, so that the given noise decides the denoising too
+    points, _, _ = ellipsoid(5000, (1.5, 1.0, 0.75), noise=0.002)
+    own = cas.multiscale_curvatures(points)
+    assert own.denoised
+    given = cas.multiscale_curvatures(points, spacing=own.spacing, noise=own.noise)
+    assert given.spacing == own.spacing and given.noise == own.noise and given.denoised
+    for name in own.layers:
+        for key in ("H", "K", "k1", "k2", "normal", "d1", "d2", "radius", "distance", "source"):
+            assert own[name][key].tobytes() == given[name][key].tobytes(), (name, key)
+    coarser = cas.multiscale_curvatures(points, radii=("4s",), spacing=2 * own.spacing, noise=own.noise)
+    on_surface = coarser["r4s"].source == 0
+    assert on_surface.any()
+    assert (coarser["r4s"].radius[on_surface] == 2 * own["r4s"].radius[on_surface]).all()
+    assert not cas.multiscale_curvatures(points, radii=("4s",), spacing=own.spacing, noise=0.0).denoised
+
+
 def test_given_inward_normals_are_followed():
     points, normals, H = ellipsoid(5000, (1.5, 1.0, 0.75))
     r = cas.multiscale_curvatures(points, -normals, radii=("4s",))

@@ -76,6 +76,22 @@ def test_wrong_shapes_and_types(points, error, message):
             call(points)
 
 
+@pytest.mark.parametrize("kwargs, message", [
+    ({"spacing": 0.1}, "spacing and noise are given together"),
+    ({"noise": 0.1}, "spacing and noise are given together"),
+    ({"spacing": 0.0, "noise": 0.1}, "spacing must be finite and positive"),
+    ({"spacing": np.inf, "noise": 0.1}, "spacing must be finite and positive"),
+    ({"spacing": np.nan, "noise": 0.1}, "spacing must be finite and positive"),
+    ({"spacing": 0.1, "noise": -0.5}, "noise must be a number, 0 or more"),
+    ({"spacing": 0.1, "noise": np.nan}, "noise must be a number, 0 or more"),
+])
+def test_bad_spacing_and_noise(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        cas.multiscale_curvatures(POINTS, **kwargs)
+    with pytest.raises(TypeError):
+        cas.multiscale_curvatures(POINTS, spacing="0.1", noise=0.1)
+
+
 def test_wrong_normals():
     with pytest.raises(ValueError, match=r"normals must be an \(N, 3\) array with N = 500"):
         cas.multiscale_curvatures(POINTS, POINTS[:10])

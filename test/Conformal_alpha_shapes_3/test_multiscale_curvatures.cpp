@@ -20,9 +20,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -314,6 +316,101 @@ BOOST_AUTO_TEST_CASE(any_order_of_the_points_gives_the_same_results)
     for(std::size_t k = 0; k < permutation.size(); ++k)
       differing += same_bits(layers[l][permutation[k]], layers_shuffled[l][k]) ? 0 : 1;
     BOOST_TEST_CONTEXT("neighborhood " << l) { BOOST_TEST(differing == 0u); }
+  }
+}
+
+// The layers of `analysis` at its automatic scale and the default neighborhoods.
+std::vector<std::vector<CAS3::Point_curvature<K> > > default_layers(const Analysis& analysis)
+{
+  Analysis::Surface surface;
+  analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
+  return analysis.estimate_curvatures(surface, CAS3::default_neighborhoods());
+}
+
+// Whether two doubles have the same bits (NaN equals NaN).
+bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
+
+// The noise_estimate of a larger run (issue 37: tiles take the whole
+// cloud's decisions): given a run's own noise(), a run on the same points,
+// far from the unit size so that the working frame rescales them, gives the
+// same bits in every layer; a spacing twice as large doubles the radius of
+// the "4s" layer; the denoising decision follows the given noise; an
+// invalid estimate is refused.
+BOOST_AUTO_TEST_CASE(noise_estimate_of_a_larger_run)
+{
+  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(5000, 1, 0.7, 0.4);
+  cas3_analytic::add_normal_noise(s, 0.1, 5100);
+  for(Point& p : s.points)
+    p = Point(1000 * p.x() + 3, 1000 * p.y() - 7, 1000 * p.z() + 11);
+  const CAS3::Multiscale_curvatures<K> own(s.points.begin(), s.points.end());
+  const CAS3::Noise_estimate noise = own.noise();
+  BOOST_REQUIRE(own.denoising().passes > 0);
+  const CAS3::Multiscale_curvatures<K> given(s.points.begin(), s.points.end(), CAS3::parameters::noise_estimate(noise));
+  BOOST_TEST(same_bits(given.noise().spacing, noise.spacing));
+  BOOST_TEST(same_bits(given.noise().noise, noise.noise));
+  BOOST_TEST(given.denoising().passes == own.denoising().passes);
+  BOOST_TEST(given.denoising().neighbors == own.denoising().neighbors);
+  BOOST_TEST(same_bits(given.scale_value(CAS3::Scale::automatic()), own.scale_value(CAS3::Scale::automatic())));
+  const auto own_layers = default_layers(own), given_layers = default_layers(given);
+  BOOST_REQUIRE(given_layers.size() == own_layers.size());
+  for(std::size_t k = 0; k < own_layers.size(); ++k)
+  {
+    std::size_t differing = 0;
+    for(std::size_t i = 0; i < own_layers[k].size(); ++i)
+      differing += !same_bits(own_layers[k][i], given_layers[k][i]);
+    BOOST_TEST(differing == 0u, "layer " << k << ": " << differing << " points differ");
+  }
+
+  CAS3::Noise_estimate doubled = noise;
+  doubled.spacing *= 2;
+  const CAS3::Multiscale_curvatures<K> coarser(s.points.begin(), s.points.end(),
+                                               CAS3::parameters::noise_estimate(doubled));
+  const CAS3::Neighborhood four = CAS3::Neighborhood::spacings(4);
+  BOOST_TEST(coarser.radius(four) == 2 * own.radius(four));
+  CAS3::Multiscale_curvatures<K>::Surface surface;
+  coarser.surface(coarser.scale_value(CAS3::Scale::automatic()), surface);
+  const auto four_layer = coarser.estimate_curvatures(surface, {four}).front();
+  std::size_t on_surface = 0, wrong_radius = 0;
+  for(const CAS3::Point_curvature<K>& p : four_layer)
+    if(p.on_surface())
+    {
+      ++on_surface;
+      wrong_radius += p.radius != 2 * own.radius(four);
+    }
+  BOOST_TEST(on_surface > 0u);
+  BOOST_TEST(wrong_radius == 0u);
+
+  CAS3::Noise_estimate clean = noise;
+  clean.noise = clean.noise_24 = 0;
+  BOOST_TEST(CAS3::Multiscale_curvatures<K>(s.points.begin(), s.points.end(), CAS3::parameters::noise_estimate(clean))
+               .denoising()
+               .passes
+             == 0);
+
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const std::vector<Point> few(s.points.begin(), s.points.begin() + 200);
+  for(const CAS3::Noise_estimate& bad : {CAS3::Noise_estimate{0, 0.1, 0.1}, CAS3::Noise_estimate{-1, 0.1, 0.1},
+                                         CAS3::Noise_estimate{inf, 0.1, 0.1}, CAS3::Noise_estimate{nan, 0.1, 0.1},
+                                         CAS3::Noise_estimate{1, -0.1, -0.1}, CAS3::Noise_estimate{1, nan, nan},
+                                         CAS3::Noise_estimate{1e300, 0.1, 0.1}})
+  {
+    // the last spacing overflows in the working frame of points this small
+    std::vector<Point> tiny;
+    for(const Point& p : few)
+      tiny.push_back(Point(1e-70 * p.x(), 1e-70 * p.y(), 1e-70 * p.z()));
+    std::string message;
+    try
+    {
+      CAS3::Multiscale_curvatures<K>(tiny.begin(), tiny.end(), CAS3::parameters::noise_estimate(bad));
+    }
+    catch(const std::invalid_argument& e)
+    {
+      message = e.what();
+    }
+    BOOST_TEST_CONTEXT("spacing " << bad.spacing << ", noise " << bad.noise)
+    {
+      BOOST_TEST(message.find("noise_estimate") != std::string::npos, message);
+    }
   }
 }
 

@@ -22,6 +22,7 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <stdexcept>
@@ -82,15 +83,20 @@ public:
       \cgalParamType{`std::vector<Vector>`}
       \cgalParamDefault{empty}
     \cgalParamNEnd
+    \cgalParamNBegin{noise_estimate}
+      \cgalParamDescription{the spacing (in input units) and noise (in spacings) of a larger cloud these points are part of, such as the `noise()` of a run on the whole cloud when each tile is run alone: used instead of an estimate on these points, so that `noise()`, radii in spacings, the automatic radius, the noise level of the curvature fits and the denoising decision are those of the larger run}
+      \cgalParamType{`Noise_estimate`}
+      \cgalParamDefault{`estimate_noise()` of these points (after outliers are left out)}
+    \cgalParamNEnd
     \cgalParamNBegin{denoising}
       \cgalParamDescription{whether the points are smoothed first}
       \cgalParamType{`Denoising`}
-      \cgalParamDefault{`AUTOMATIC_DENOISING`: as `denoising_plan()` says for the estimated noise}
+      \cgalParamDefault{`AUTOMATIC_DENOISING`: as `denoising_plan()` says for the noise (estimated or `noise_estimate`)}
     \cgalParamNEnd
     \cgalParamNBegin{denoising_neighbors}
       \cgalParamDescription{the neighbors of the smoothing jet fit}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{as `denoising_plan()` says for the estimated noise (at least 24)}
+      \cgalParamDefault{as `denoising_plan()` says for the noise (at least 24)}
     \cgalParamNEnd
     \cgalParamNBegin{surface_extraction}
       \cgalParamDescription{how surfaces are extracted}
@@ -106,8 +112,9 @@ public:
 
   \throws std::invalid_argument naming the first input point with a NaN or
   infinite coordinate; when `reference_normals` is neither empty nor one
-  per point; and as `Conformal_alpha_shape_3` when the points left do not
-  span 3D.
+  per point; when `noise_estimate`'s spacing is not finite and positive
+  (or out of scale with the points) or its noise is negative or NaN; and as
+  `Conformal_alpha_shape_3` when the points left do not span 3D.
   */
   template <class InputIterator, class NamedParameters = CGAL::parameters::Default_named_parameters>
   Multiscale_curvatures(InputIterator first, InputIterator last,
@@ -135,7 +142,10 @@ public:
     std::vector<Point> points = std::move(m_input.points);
     m_input.points = std::vector<Point>();
 
-    m_noise = estimate_noise(points);
+    if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np_cas3::noise_estimate_t>::value)
+      m_noise = estimate_noise(points);
+    else
+      m_noise = working_noise(get_parameter(np, internal_np_cas3::noise_estimate));
     m_denoising = denoising_plan(m_noise, choose_parameter(get_parameter(np, internal_np_cas3::denoising),
                                                            AUTOMATIC_DENOISING),
                                  choose_parameter(get_parameter(np, internal_np_cas3::denoising_neighbors), 0u));
@@ -154,7 +164,8 @@ public:
   const std::vector<std::size_t>& outliers() const { return m_input.outliers; }
   /// whether input point `i` is an isolated far outlier
   bool is_outlier(std::size_t i) const { return m_input.is_outlier[i]; }
-  /// the noise of the input points (`estimate_noise()`); `spacing` in input units
+  /// the noise of the input points (`estimate_noise()`, or the `noise_estimate`
+  /// given); `spacing` in input units
   Noise_estimate noise() const
   {
     Noise_estimate n = m_noise;
@@ -263,6 +274,27 @@ public:
   }
 
 private:
+  // A given estimate in the working frame, checked first. The frame's scale
+  // is a power of two, so the spacing of a run's `noise()` given back to a
+  // run on the same points comes back to the same bits.
+  Noise_estimate working_noise(const Noise_estimate& given) const
+  {
+    if(!(std::isfinite(given.spacing) && given.spacing > 0))
+      throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing must be finite and positive, not "
+                                  + std::to_string(given.spacing));
+    if(!(given.noise >= 0 && given.noise_24 >= 0))
+      throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's noise must be a number, 0 or more, not "
+                                  + std::to_string(given.noise) + " (16 neighbors) and "
+                                  + std::to_string(given.noise_24) + " (24 neighbors)");
+    Noise_estimate working = given;
+    working.spacing = m_input.length_from_input(given.spacing);
+    if(!(std::isfinite(working.spacing) && working.spacing > 0))
+      throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing " + std::to_string(given.spacing)
+                                  + " is out of scale with these points (of size "
+                                  + std::to_string(m_input.size()) + ")");
+    return working;
+  }
+
   // Writes the values of the shape's input point `i` at its input index, in input units.
   struct Input_units_writer
   {
@@ -387,12 +419,12 @@ in memory, use `Multiscale_curvatures` a few layers at a time.
     \cgalParamType{`Curvature_estimator`}
     \cgalParamDefault{`QUADRIC_FIT`}
   \cgalParamNEnd
-  \cgalParamNBegin{reference_normals, denoising, denoising_neighbors, surface_extraction, local_scale_estimator}
+  \cgalParamNBegin{reference_normals, noise_estimate, denoising, denoising_neighbors, surface_extraction, local_scale_estimator}
     \cgalParamDescription{as for `Multiscale_curvatures`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\throws std::invalid_argument as `Conformal_alpha_shape_3` and
+\throws std::invalid_argument as `Multiscale_curvatures` and
 `estimate_vertex_curvatures()`.
 */
 template <class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>

@@ -34,6 +34,7 @@ enum vertex_neighborhood_radius_map_t { vertex_neighborhood_radius_map };
 enum neighborhoods_t { neighborhoods };
 enum noise_level_t { noise_level };
 enum sample_spacing_t { sample_spacing };
+enum noise_estimate_t { noise_estimate };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -88,6 +89,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_neighborhood_radius_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhoods)
 CGAL_CAS3_ADD_NAMED_PARAMETER(noise_level)
 CGAL_CAS3_ADD_NAMED_PARAMETER(sample_spacing)
+CGAL_CAS3_ADD_NAMED_PARAMETER(noise_estimate)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 
