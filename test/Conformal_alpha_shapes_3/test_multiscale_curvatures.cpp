@@ -328,7 +328,7 @@ std::vector<std::vector<CAS3::Point_curvature<K> > > default_layers(const Analys
 }
 
 // Whether two doubles have the same bits (NaN equals NaN).
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
+bool same_double(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
 
 // The noise_estimate of a larger run (issue 37: tiles take the whole
 // cloud's decisions): given a run's own noise(), a run on the same points,
@@ -346,11 +346,11 @@ BOOST_AUTO_TEST_CASE(noise_estimate_of_a_larger_run)
   const CAS3::Noise_estimate noise = own.noise();
   BOOST_REQUIRE(own.denoising().passes > 0);
   const CAS3::Multiscale_curvatures<K> given(s.points.begin(), s.points.end(), CAS3::parameters::noise_estimate(noise));
-  BOOST_TEST(same_bits(given.noise().spacing, noise.spacing));
-  BOOST_TEST(same_bits(given.noise().noise, noise.noise));
+  BOOST_TEST(same_double(given.noise().spacing, noise.spacing));
+  BOOST_TEST(same_double(given.noise().noise, noise.noise));
   BOOST_TEST(given.denoising().passes == own.denoising().passes);
   BOOST_TEST(given.denoising().neighbors == own.denoising().neighbors);
-  BOOST_TEST(same_bits(given.scale_value(CAS3::Scale::automatic()), own.scale_value(CAS3::Scale::automatic())));
+  BOOST_TEST(same_double(given.scale_value(CAS3::Scale::automatic()), own.scale_value(CAS3::Scale::automatic())));
   const auto own_layers = default_layers(own), given_layers = default_layers(given);
   BOOST_REQUIRE(given_layers.size() == own_layers.size());
   for(std::size_t k = 0; k < own_layers.size(); ++k)

@@ -152,6 +152,39 @@ BOOST_AUTO_TEST_CASE(each_point_follows_its_given_normal)
   BOOST_TEST(checked >= points.size() * 99 / 100);
 }
 
+// Where the corners of the nearest facet have normals that cancel (a fold
+// of a degenerate surface: fuzzing found 40 grid points, many repeated,
+// whose 12-face surface gave a point 16 units away the zero normal), the
+// point takes a corner's value: a unit normal, never the zero vector.
+BOOST_AUTO_TEST_CASE(corner_normals_that_cancel_give_a_corner_value)
+{
+  const std::vector<Point> pts{
+    {0, 64, 0},   {0, 0, 0},  {0, 10, 0},  {-14, 0, 0}, {0, 0, 0},   {0, 0, 0},   {0, 0, 64},   {0, 0, 0},
+    {0, 0, 10},   {0, -14, 0}, {0, 0, 0},  {0, 0, 0},   {0, 0, 0},   {0, 0, 0},   {0, 0, 0},    {0, 0, 0},
+    {0, 10, 10},  {10, 0, 0}, {10, 0, 25}, {10, 10, 10}, {1, 64, 0},  {0, 0, 0},   {10, 0, -14}, {4, 0, 0},
+    {0, 10, 10},  {10, 0, 0}, {0, 0, 0},   {0, 0, 0},   {0, 0, 0},   {0, 10, 10}, {10, 0, 0},   {10, 0, 25},
+    {10, 10, 10}, {1, 64, 0}, {0, 0, 0},   {10, 0, -14}, {0, 0, 10}, {10, 10, 0}, {0, 10, 0},   {25, 10, 10}};
+  const Analysis analysis(pts.begin(), pts.end());
+  std::size_t nearest = 0;
+  for(const CAS3::Scale& scale : {CAS3::Scale::automatic(), CAS3::Scale::quantile(0.5)})
+  {
+    Analysis::Surface surface;
+    analysis.surface(analysis.scale_value(scale), surface);
+    for(const CAS3::Neighborhood& n : {CAS3::Neighborhood::spacings(4), CAS3::Neighborhood::automatic()})
+    {
+      const std::vector<CAS3::Point_curvature<K> > c = analysis.estimate_curvatures(surface, {n}).front();
+      for(std::size_t i = 0; i < c.size(); ++i)
+        if(c[i].source != CAS3::NO_VALUE)
+        {
+          nearest += c[i].source == CAS3::NEAREST_SURFACE_POINT;
+          BOOST_TEST_INFO("point " << i << ", source " << int(c[i].source) << ", distance " << c[i].distance);
+          BOOST_TEST(std::abs(std::sqrt(c[i].normal.squared_length()) - 1) < 1e-9);
+        }
+    }
+  }
+  BOOST_TEST(nearest > 0u);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_transfer_to_points

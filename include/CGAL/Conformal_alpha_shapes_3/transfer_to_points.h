@@ -187,6 +187,15 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
     max_k += w * corner_value.principal.max_curvature;
     min_k += w * corner_value.principal.min_curvature;
   }
+  // Corners whose normals nearly cancel (a fold of the surface) have no
+  // meaningful average: the corner of largest weight speaks for the point.
+  if(!(n.norm() > 0.5))
+  {
+    const int nearest = int(std::max_element(weight, weight + 3) - weight);
+    const Vertex_curvature<GT>& e = value(corner[nearest]);
+    return record(NEAREST_SURFACE_POINT, c.distance, e.radius, e.normal, e.principal.max_curvature,
+                  e.principal.min_curvature, e.principal.max_direction, e.principal.min_direction);
+  }
   n.normalize();
   max_d = (max_d - max_d.dot(n) * n).normalized();
   return record(NEAREST_SURFACE_POINT, c.distance, r, vector(n), max_k, min_k, vector(max_d), vector(n.cross(max_d)));
@@ -207,7 +216,8 @@ storage only then). A point whose vertex is a vertex of the surface with a defin
 value takes that value (`SURFACE_VERTEX`); any other point takes the values
 at its nearest point on the surface, interpolated over the facet there by
 barycentric weights over the corners with values (`NEAREST_SURFACE_POINT`,
-with the distance), unless it is farther than `far_from_surface()` local
+with the distance; where the corners' normals nearly cancel, their weighted
+sum shorter than one half, the values of the corner of largest weight), unless it is farther than `far_from_surface()` local
 spacings (`NO_VALUE`, all NaN; so is every point when the surface is
 empty). Where several surface vertices stand for one vertex of the shape
 (a pinched vertex), the first with a defined value gives it. With

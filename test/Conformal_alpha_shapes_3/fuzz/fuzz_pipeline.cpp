@@ -188,11 +188,6 @@ void run(const std::vector<Point>& points, bool finite)
         if(c.source == CAS3::NO_VALUE)
           continue;
         CHECK(!surface.is_empty(), "point values: a value without a surface");
-        // The open finding findings/transfer_zero_interpolated_normal (README.md):
-        // an interpolated value whose corner normals cancel has the zero normal.
-        // Tolerated so that CI's short runs stay green; remove once it is fixed.
-        if(c.source == CAS3::NEAREST_SURFACE_POINT && c.normal == CGAL::NULL_VECTOR)
-          continue;
         check_values(c.normal, c.principal.max_curvature, c.principal.min_curvature, c.mean_curvature,
                      c.gaussian_curvature, c.radius, finite, "point values",
                      "scale " + std::to_string(int(scale.kind())) + " a " + std::to_string(a) + ", neighborhood "
