@@ -462,7 +462,7 @@ public:
     m_shape = std::make_unique<Shape>();
     without_gil([&] {
       return local_scales ? m_shape->make_conformal_alpha_shape(points.begin(), points.end(),
-                                                                CAS3::parameters::local_scales(scales))
+                                                                CAS3::parameters::local_feature_sizes(scales))
                           : m_shape->make_conformal_alpha_shape(points.begin(), points.end());
     });
   }

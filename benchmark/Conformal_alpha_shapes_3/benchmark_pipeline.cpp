@@ -409,7 +409,7 @@ void measure_parts(Child_meter& m, const Input& in)
   m.stage("Conformal_alpha_shape_3 construction", "part", [&] {
     shape = std::make_unique<Analysis::Shape>();
     shape->make_conformal_alpha_shape(points.begin(), points.end(),
-      CAS3::parameters::local_scale_estimator(CAS3::NOISE_ROBUST_POLE_DISTANCE));
+      CAS3::parameters::local_feature_size_estimator(CAS3::NOISE_ROBUST_POLE_DISTANCE));
     return std::to_string(shape->number_of_finite_cells()) + " finite cells";
   });
   m.stage("Delaunay_triangulation_3<Epick> (same points, same process)", "part", [&] {

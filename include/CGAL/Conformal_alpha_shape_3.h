@@ -11,7 +11,7 @@
 // quarter of the lines). What stands alone is in internal/: the input checks
 // (input_hygiene.h), the insertion order (order_free.h), the input-index
 // table, the cell values, the critical values of classification, the poles
-// and the local-scale policy (sample_spacing.h).
+// and the local-feature-size policy (sample_spacing.h).
 
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
@@ -47,9 +47,9 @@ namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 
 /// \ingroup PkgConformalAlphaShapes3Classes
-/// How `Conformal_alpha_shape_3` computes the local scale of each vertex from
-/// the Voronoi diagram of the points (named parameter `local_scale_estimator`).
-enum Local_scale_estimator
+/// How `Conformal_alpha_shape_3` computes the local feature size of each vertex from
+/// the Voronoi diagram of the points (named parameter `local_feature_size_estimator`).
+enum Local_feature_size_estimator
 {
   /// The paper's: the distance to the pole, the Amenta-Bern negative pole
   /// (see `Conformal_alpha_shape_3::pole()`). On noisy samples it collapses
@@ -67,7 +67,7 @@ enum Local_scale_estimator
 namespace internal {
 
 // Whether T is a range rather than an iterator, to tell the two forms of
-// the named parameter `local_scales` apart.
+// the named parameter `local_feature_sizes` apart.
 template <class T, class = void>
 struct Is_range : std::false_type {};
 template <class T>
@@ -84,14 +84,14 @@ struct Is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>())),
 The conformal alpha shape filtration of a 3D point set (Cazals, Giesen, Pauly
 and Zomorodian, 2005), built on its Delaunay triangulation.
 
-Every vertex `p` carries a local scale `alpha_p+` (by default derived from the
-distance to its pole, see `local_scale()`). A finite simplex `s` with ordinary alpha value
+Every vertex `p` carries a local feature size `alpha_p+` (by default derived from the
+distance to its pole, see `local_feature_size()`). A finite simplex `s` with ordinary alpha value
 `alpha(s)` (the radius, not squared, of its smallest empty circumscribing
 ball, attached to its cofaces when that ball is not empty) gets the conformal
 value `a(s) = alpha(s) / min_{p in s} alpha_p+`; vertices get 0. The conformal
 alpha complex at internal scale `a` is the set of simplices with `a(s) <= a`.
 Every value handled by this class is such a dimensionless ratio of radii:
-with all local scales equal to 1 the complex at `a` is the ordinary alpha
+with all local feature sizes equal to 1 the complex at `a` is the ordinary alpha
 complex of `CGAL::Alpha_shape_3` at its (squared) parameter `a*a`.
 
 Classification follows `CGAL::Alpha_shape_3` in `GENERAL` mode: a simplex is
@@ -104,7 +104,7 @@ complex; a surface sample's surface first appears as `SINGULAR` facets.
 
 Values are kept in the triangulation's own vertices and cells: each cell keeps
 its radius and which of its facets are Gabriel (16 bytes per cell), each vertex
-its local scale and pole. Facet and edge values follow from these when asked
+its local feature size and pole. Facet and edge values follow from these when asked
 for. The sorted spectrum is computed on first use.
 
 The triangulation must not be modified after construction: its values would
@@ -198,21 +198,21 @@ public:
   Clears the shape, then builds it for the points in `[first, last)`.
   Duplicate points collapse into one vertex that remembers all their
   indices. Returns the number of input points. Poles are always computed;
-  the local scales come from them, or from the caller.
+  the local feature sizes come from them, or from the caller.
 
   \cgalNamedParamsBegin
-    \cgalParamNBegin{local_scale_estimator}
-      \cgalParamDescription{how the local scale of each vertex is computed from the Voronoi diagram (ignored when `local_scales` is given)}
-      \cgalParamType{`Conformal_alpha_shapes_3::Local_scale_estimator`}
+    \cgalParamNBegin{local_feature_size_estimator}
+      \cgalParamDescription{how the local feature size of each vertex is computed from the Voronoi diagram (ignored when `local_feature_sizes` is given)}
+      \cgalParamType{`Conformal_alpha_shapes_3::Local_feature_size_estimator`}
       \cgalParamDefault{`Conformal_alpha_shapes_3::NOISE_ROBUST_POLE_DISTANCE`}
     \cgalParamNEnd
-    \cgalParamNBegin{local_scales}
-      \cgalParamDescription{the caller's local scales, one per input point, in input order: the
-                             local scale of input point `i` is its `i`-th value; a vertex standing
-                             for duplicate points takes the smallest of their scales}
-      \cgalParamType{an input iterator to the first scale, or a range of the scales (then of the
+    \cgalParamNBegin{local_feature_sizes}
+      \cgalParamDescription{the caller's local feature sizes, one per input point, in input order: the
+                             local feature size of input point `i` is its `i`-th value; a vertex standing
+                             for duplicate points takes the smallest of their sizes}
+      \cgalParamType{an input iterator to the first size, or a range of the sizes (then of the
                       same size as `[first, last)`), with values convertible to `double`}
-      \cgalParamDefault{scales from the poles, as `local_scale_estimator` says}
+      \cgalParamDefault{sizes from the poles, as `local_feature_size_estimator` says}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
@@ -224,8 +224,8 @@ public:
   longest axis, when a circumcenter or circumradius overflows or underflows
   in `double`, or when the points do not span 3D (empty input, fewer than 4
   distinct points, all coplanar or collinear): the filtration needs a 3D
-  triangulation. With `local_scales`, also when a scale is not finite and
-  positive (the message names its index) or when the range of scales is not
+  triangulation. With `local_feature_sizes`, also when a size is not finite and
+  positive (the message names its index) or when the range of sizes is not
   as long as the input.
   \throws Conformal_alpha_shapes_3::Interrupted, leaving the shape empty, when
   the calling thread's `Conformal_alpha_shapes_3::Scoped_interruption_check`
@@ -236,13 +236,13 @@ public:
                                        const NamedParameters& np = parameters::default_values())
   {
     static_assert(Conformal_alpha_shapes_3::internal::Is_named_function_parameters<NamedParameters>::value,
-                  "the third argument is a pack of named parameters: pass one scale per point as "
-                  "Conformal_alpha_shapes_3::parameters::local_scales(scales_first)");
+                  "the third argument is a pack of named parameters: pass one size per point as "
+                  "Conformal_alpha_shapes_3::parameters::local_feature_sizes(scales_first)");
     using parameters::choose_parameter;
     using parameters::get_parameter;
     namespace CAS3 = Conformal_alpha_shapes_3;
-    const CAS3::Local_scale_estimator estimator = choose_parameter(
-      get_parameter(np, CAS3::internal_np_cas3::local_scale_estimator), CAS3::NOISE_ROBUST_POLE_DISTANCE);
+    const CAS3::Local_feature_size_estimator estimator = choose_parameter(
+      get_parameter(np, CAS3::internal_np_cas3::local_feature_size_estimator), CAS3::NOISE_ROBUST_POLE_DISTANCE);
 
     try
     {
@@ -263,18 +263,18 @@ public:
       for(Vertex_handle v : this->finite_vertex_handles())
       {
         v->set_pole_cell(poles[v->vertex_index()].cell);
-        v->set_local_scale(poles[v->vertex_index()].distance);
+        v->set_local_feature_size(poles[v->vertex_index()].distance);
       }
       if constexpr(!parameters::is_default_parameter<NamedParameters,
-                                                     CAS3::internal_np_cas3::local_scales_t>::value)
+                                                     CAS3::internal_np_cas3::local_feature_sizes_t>::value)
       {
-        set_caller_scales(get_parameter(np, CAS3::internal_np_cas3::local_scales));
+        set_caller_local_feature_sizes(get_parameter(np, CAS3::internal_np_cas3::local_feature_sizes));
       }
       else if(estimator == CAS3::NOISE_ROBUST_POLE_DISTANCE)
       {
-        const std::vector<double> floors = CAS3::internal::local_scale_floors(*this, cells);
+        const std::vector<double> floors = CAS3::internal::local_feature_size_floors(*this, cells);
         for(Vertex_handle v : this->finite_vertex_handles())
-          v->set_local_scale((std::max)(v->local_scale(), floors[v->vertex_index()]));
+          v->set_local_feature_size((std::max)(v->local_feature_size(), floors[v->vertex_index()]));
       }
     }
     catch(const CAS3::Interrupted&)
@@ -316,7 +316,7 @@ public:
   }
   /// @}
 
-  /// \name Local scales
+  /// \name Local feature sizes
   /// @{
 
   /// The pole of `v`: the Voronoi vertex (circumcenter of a finite cell)
@@ -332,13 +332,13 @@ public:
       c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
   }
 
-  /// The local scale `alpha_p+` of `v`, an estimate of the local feature
-  /// size: its distance to `pole(v)`, floored at 4 sample spacings by
-  /// default (see `Conformal_alpha_shapes_3::Local_scale_estimator`: under
+  /// The local feature size `alpha_p+` of `v` (an estimate of the distance to
+  /// the medial axis): its distance to `pole(v)`, floored at 4 sample spacings by
+  /// default (see `Conformal_alpha_shapes_3::Local_feature_size_estimator`: under
   /// radial noise above the local sagitta, about spacing^2 / (8R), the bare
-  /// pole distance collapses for points displaced inwards), or the scale
+  /// pole distance collapses for points displaced inwards), or the size
   /// supplied by the caller.
-  FT local_scale(Vertex_handle v) const { return v->local_scale(); }
+  FT local_feature_size(Vertex_handle v) const { return v->local_feature_size(); }
   /// @}
 
   /// \name Values
@@ -350,11 +350,11 @@ public:
   { return this->is_infinite(v) ? infinity() : FT(0); }
 
   FT conformal_alpha(Cell_handle c) const
-  { return this->is_infinite(c) ? infinity() : c->alpha() / min_scale(c); }
+  { return this->is_infinite(c) ? infinity() : c->alpha() / min_local_feature_size(c); }
 
   FT conformal_alpha(const Facet& f) const { return conformal_alpha(f.first, f.second); }
   FT conformal_alpha(Cell_handle c, int i) const
-  { return this->is_infinite(c, i) ? infinity() : ordinary_alpha(c, i) / min_scale(c, i); }
+  { return this->is_infinite(c, i) ? infinity() : ordinary_alpha(c, i) / min_local_feature_size(c, i); }
 
   FT conformal_alpha(const Edge& e) const { return conformal_alpha(e.first, e.second, e.third); }
   FT conformal_alpha(Cell_handle c, int i, int j) const
@@ -636,37 +636,37 @@ private:
       throw std::invalid_argument("Conformal_alpha_shape_3: the scale alpha must be a number >= 0");
   }
 
-  // The named parameter `local_scales`: a range, or an iterator to the first
-  // scale.
+  // The named parameter `local_feature_sizes`: a range, or an iterator to the first
+  // size.
   template <class Scales>
-  void set_caller_scales(const Scales& scales)
+  void set_caller_local_feature_sizes(const Scales& scales)
   {
     if constexpr(Conformal_alpha_shapes_3::internal::Is_range<Scales>::value)
     {
       if(size_type(std::distance(std::begin(scales), std::end(scales))) != m_input_vertices.size())
       {
         clear();
-        throw std::invalid_argument("Conformal_alpha_shape_3: the range of local scales is not as long as "
+        throw std::invalid_argument("Conformal_alpha_shape_3: the range of local feature sizes is not as long as "
                                     "the input");
       }
-      set_caller_scales(std::begin(scales));
+      set_caller_local_feature_sizes(std::begin(scales));
     }
     else
     {
       Scales it = scales;
       for(Vertex_handle v : this->finite_vertex_handles())
-        v->set_local_scale(infinity());
+        v->set_local_feature_size(infinity());
       for(size_type i = 0; i < m_input_vertices.size(); ++i, ++it)
       {
         const double s = CGAL::to_double(*it);
         if(!(std::isfinite(s) && s > 0))
         {
           clear();
-          throw std::invalid_argument("Conformal_alpha_shape_3: local scale of input point "
+          throw std::invalid_argument("Conformal_alpha_shape_3: local feature size of input point "
                                       + std::to_string(i) + " is not finite and positive");
         }
         Vertex_handle v = m_input_vertices[i];
-        v->set_local_scale((std::min)(v->local_scale(), s));
+        v->set_local_feature_size((std::min)(v->local_feature_size(), s));
       }
     }
   }
@@ -679,15 +679,15 @@ private:
     return EXTERIOR;
   }
 
-  FT min_scale(Cell_handle c) const
+  FT min_local_feature_size(Cell_handle c) const
   {
-    return (std::min)((std::min)(c->vertex(0)->local_scale(), c->vertex(1)->local_scale()),
-                      (std::min)(c->vertex(2)->local_scale(), c->vertex(3)->local_scale()));
+    return (std::min)((std::min)(c->vertex(0)->local_feature_size(), c->vertex(1)->local_feature_size()),
+                      (std::min)(c->vertex(2)->local_feature_size(), c->vertex(3)->local_feature_size()));
   }
-  FT min_scale(Cell_handle c, int i) const
+  FT min_local_feature_size(Cell_handle c, int i) const
   {
-    return (std::min)({c->vertex((i + 1) & 3)->local_scale(), c->vertex((i + 2) & 3)->local_scale(),
-                       c->vertex((i + 3) & 3)->local_scale()});
+    return (std::min)({c->vertex((i + 1) & 3)->local_feature_size(), c->vertex((i + 2) & 3)->local_feature_size(),
+                       c->vertex((i + 3) & 3)->local_feature_size()});
   }
 
   const std::vector<FT>& spectrum() const

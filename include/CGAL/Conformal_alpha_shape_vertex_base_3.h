@@ -15,7 +15,7 @@ namespace CGAL {
 \ingroup PkgConformalAlphaShapes3Classes
 
 The vertex base of the triangulation underlying `Conformal_alpha_shape_3`.
-It stores what the filtration needs per vertex: the vertex's local scale
+It stores what the filtration needs per vertex: the vertex's local feature size
 `alpha_p+`, the cell whose circumcenter is the vertex's pole, and a dense
 vertex index used to address per-vertex arrays of the shape.
 
@@ -47,9 +47,9 @@ public:
   Conformal_alpha_shape_vertex_base_3(const Point& p, Cell_handle c) : Vb(p, c) {}
   Conformal_alpha_shape_vertex_base_3(Cell_handle c) : Vb(c) {}
 
-  /// the local scale `alpha_p+` (a length)
-  double local_scale() const { return m_local_scale; }
-  void set_local_scale(double s) { m_local_scale = s; }
+  /// the local feature size `alpha_p+` (a length)
+  double local_feature_size() const { return m_local_feature_size; }
+  void set_local_feature_size(double s) { m_local_feature_size = s; }
 
   /// the finite cell whose circumcenter is this vertex's pole
   Cell_handle pole_cell() const { return m_pole_cell; }
@@ -60,7 +60,7 @@ public:
   void set_vertex_index(std::size_t i) { m_index = i; }
 
 private:
-  double      m_local_scale = 0;
+  double      m_local_feature_size = 0;
   Cell_handle m_pole_cell   = Cell_handle();
   std::size_t m_index       = 0;
 };

@@ -309,20 +309,21 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
 class ConformalAlphaShape:
     """The conformal alpha shape (filtration) of a point cloud, in its coordinates.
 
-    Each point's ball grows with its local scale (by default its distance to
-    its Voronoi pole, at least 4 sample spacings); a simplex enters the
-    filtration at its conformal value, its empty ball's radius relative to
-    the local scales of its points. Unlike ``multiscale_curvatures``, the
+    Each point's ball grows with its local feature size (by default its
+    distance to its Voronoi pole, at least 4 sample spacings); a simplex
+    enters the filtration at its conformal value, its empty ball's radius
+    relative to the local feature sizes of its points. Unlike ``multiscale_curvatures``, the
     points are used as given (not recentered, no outlier removal, no smoothing).
 
     Parameters:
         points: (N, 3) array.
-        local_scales: optional (N,) array of positive local scales, one per
-            point, instead of the pole distances (all 1: the classic alpha
+        local_scales: optional (N,) array of positive local feature sizes,
+            one per point (C++: ``local_feature_sizes``), instead of the pole
+            distances (all 1: the classic alpha
             shape, ``a`` a squared radius as in CGAL's Alpha_shape_3).
 
     Raises:
-        ValueError: as ``multiscale_curvatures``, and for local scales that
+        ValueError: as ``multiscale_curvatures``, and for local feature sizes that
             are not finite and positive (naming the index).
     """
 

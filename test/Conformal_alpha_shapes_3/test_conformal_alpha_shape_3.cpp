@@ -1,6 +1,6 @@
 // Tests of Conformal_alpha_shape_3: the filtration against CGAL's
 // Alpha_shape_3 and against the definition computed by brute force, poles
-// and local scales (the noise-robust estimator against the paper's), the
+// and local feature sizes (the noise-robust estimator against the paper's), the
 // filtration's order, spectrum and quantiles, rejected input, the fuzz
 // findings on the shape, and the same bits on one thread. (More bad input:
 // test_bad_input.cpp.)
@@ -94,7 +94,7 @@ std::map<std::vector<Point>, int> classification(const Shape& s, const Alpha& al
 void check_against_oracle(const std::vector<Point>& pts, const std::string& name)
 {
   const std::vector<double> ones(pts.size(), 1.0);
-  const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_scales(ones.begin()));
+  const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_feature_sizes(ones.begin()));
   const Oracle oracle(pts.begin(), pts.end(), 0, Oracle::GENERAL);
   BOOST_REQUIRE_EQUAL(cas.number_of_finite_cells(), oracle.number_of_finite_cells());
 
@@ -156,7 +156,7 @@ BOOST_AUTO_TEST_CASE(oracle_noisy_torus)
 // is its circumradius, that of a facet or an edge the radius of its
 // smallest circumscribing ball when no other point is inside that ball,
 // else the smallest value of its cofaces; a(s) = alpha(s) / (the smallest
-// local scale of its vertices), 0 for a vertex. Keyed by the sorted input
+// local feature size of its vertices), 0 for a vertex. Keyed by the sorted input
 // indices of the vertices (the points must be distinct, in general
 // position).
 std::map<std::vector<std::size_t>, double> conformal_values_by_definition(const std::vector<Point>& pts,
@@ -230,11 +230,11 @@ std::map<std::vector<std::size_t>, double> conformal_values_by_definition(const 
 }
 
 // The part of the values that is this package's own: on small random sets
-// with random local scales (a factor 30 between the smallest and the
+// with random local feature sizes (a factor 30 between the smallest and the
 // largest), every finite simplex's conformal value, through the filtration,
 // is the one of the definition computed by brute force, and the filtration
 // holds exactly the Delaunay simplices.
-BOOST_AUTO_TEST_CASE(oracle_for_random_local_scales)
+BOOST_AUTO_TEST_CASE(oracle_for_random_local_feature_sizes)
 {
   std::mt19937 random(17);
   std::uniform_real_distribution<double> exponent(-1.5, 2);
@@ -249,7 +249,7 @@ BOOST_AUTO_TEST_CASE(oracle_for_random_local_scales)
     for(std::size_t i = 0; i < pts.size(); ++i)
       scales.push_back(std::exp(exponent(random)));
     const auto expected = conformal_values_by_definition(pts, scales);
-    const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_scales(scales));
+    const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_feature_sizes(scales));
     std::vector<std::pair<Cas::Simplex, double> > filtration;
     cas.filtration_with_alpha_values(std::back_inserter(filtration));
     std::size_t wrong = 0, unknown = 0;
@@ -296,10 +296,10 @@ BOOST_AUTO_TEST_CASE(poles_on_a_sphere)
   for(auto v : cas.finite_vertex_handles())
   {
     const Vector normal = v->point() - CGAL::ORIGIN;
-    BOOST_TEST(cas.local_scale(v) == r, boost::test_tools::tolerance(0.05));
+    BOOST_TEST(cas.local_feature_size(v) == r, boost::test_tools::tolerance(0.05));
     // the pole of a sphere sample is near the center, so p - pole is the normal
     BOOST_TEST(angle_degrees(v->point() - cas.pole(v), normal) < 3.0);
-    BOOST_TEST(std::abs(std::sqrt(CGAL::squared_distance(v->point(), cas.pole(v))) - cas.local_scale(v))
+    BOOST_TEST(std::abs(std::sqrt(CGAL::squared_distance(v->point(), cas.pole(v))) - cas.local_feature_size(v))
                < 1e-9 * r);
     ++checked;
   }
@@ -319,8 +319,8 @@ BOOST_AUTO_TEST_CASE(poles_follow_the_normal_on_an_ellipsoid)
     angles.push_back(angle_degrees(p - cas.pole(v), normal));
     // the inner pole lies on the medial axis, no farther than the largest
     // radius of curvature a^2/c and no closer than the smallest c^2/a
-    BOOST_TEST(cas.local_scale(v) <= a * a / c * 1.05);
-    BOOST_TEST(cas.local_scale(v) >= c * c / a * 0.9);
+    BOOST_TEST(cas.local_feature_size(v) <= a * a / c * 1.05);
+    BOOST_TEST(cas.local_feature_size(v) >= c * c / a * 0.9);
   }
   std::sort(angles.begin(), angles.end());
   BOOST_TEST(angles[angles.size() / 2] < 2.0);
@@ -336,15 +336,15 @@ BOOST_AUTO_TEST_CASE(noise_robust_scales_do_not_collapse)
   const auto noisy = cas3_test::ellipsoid_sample<Point>(200000, 1.0, 0.7, 0.4, 1e-3);
   auto fifth_percentile = [](const Cas& cas) {
     std::vector<double> s;
-    for(auto v : cas.finite_vertex_handles()) s.push_back(cas.local_scale(v));
+    for(auto v : cas.finite_vertex_handles()) s.push_back(cas.local_feature_size(v));
     std::nth_element(s.begin(), s.begin() + std::ptrdiff_t(s.size() / 20), s.end());
     return s[s.size() / 20];
   };
   const double reference = fifth_percentile(Cas(clean.begin(), clean.end(),
-    CAS3::parameters::local_scale_estimator(CAS3::PAPER_POLE_DISTANCE)));
-  const Cas paper(noisy.begin(), noisy.end(), CAS3::parameters::local_scale_estimator(CAS3::PAPER_POLE_DISTANCE));
+    CAS3::parameters::local_feature_size_estimator(CAS3::PAPER_POLE_DISTANCE)));
+  const Cas paper(noisy.begin(), noisy.end(), CAS3::parameters::local_feature_size_estimator(CAS3::PAPER_POLE_DISTANCE));
   const Cas robust(noisy.begin(), noisy.end());
-  BOOST_TEST_MESSAGE("5th percentile of the local scales: clean " << reference << ", noisy paper "
+  BOOST_TEST_MESSAGE("5th percentile of the local feature sizes: clean " << reference << ", noisy paper "
                      << fifth_percentile(paper) << ", noisy robust " << fifth_percentile(robust));
   BOOST_TEST(fifth_percentile(paper) < 0.1 * reference);  // the weakness
   // floored at 4 sample spacings: not the feature size, but no longer a
@@ -357,8 +357,8 @@ BOOST_AUTO_TEST_CASE(noise_robust_scales_do_not_collapse)
   for(auto v : clean_robust.finite_vertex_handles())
   {
     const double pole_distance = std::sqrt(CGAL::squared_distance(v->point(), clean_robust.pole(v)));
-    BOOST_TEST(clean_robust.local_scale(v) >= pole_distance * (1 - 1e-9));
-    equal += clean_robust.local_scale(v) <= pole_distance * (1 + 1e-9) ? 1 : 0;
+    BOOST_TEST(clean_robust.local_feature_size(v) >= pole_distance * (1 - 1e-9));
+    equal += clean_robust.local_feature_size(v) <= pole_distance * (1 + 1e-9) ? 1 : 0;
   }
   BOOST_TEST(double(equal) > 0.9 * double(clean.size()));
 }
@@ -452,7 +452,7 @@ BOOST_AUTO_TEST_CASE(duplicates_collapse_and_remember_their_indices)
   for(std::size_t i = 0; i < pts.size(); ++i)
     BOOST_TEST(cas.input_vertex(i)->point() == pts[i]);
   for(auto w : cas.finite_vertex_handles())
-    BOOST_TEST(cas.local_scale(w) > 0);
+    BOOST_TEST(cas.local_feature_size(w) > 0);
 }
 
 BOOST_AUTO_TEST_CASE(input_that_does_not_span_3d_is_rejected)
@@ -501,7 +501,7 @@ BOOST_AUTO_TEST_CASE(non_finite_coordinates_and_scales_are_rejected_by_index)
 
   std::vector<double> scales(pts.size(), 1.0);
   auto scale_message = [&](const std::vector<double>& s) {
-    try { Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_scales(s.begin())); }
+    try { Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_feature_sizes(s.begin())); }
     catch(const std::invalid_argument& e) { return std::string(e.what()); }
     return std::string();
   };
@@ -515,29 +515,29 @@ BOOST_AUTO_TEST_CASE(non_finite_coordinates_and_scales_are_rejected_by_index)
   BOOST_TEST(scale_message(scales).empty());
 }
 
-BOOST_AUTO_TEST_CASE(local_scales_from_an_iterator_or_a_range)
+BOOST_AUTO_TEST_CASE(local_feature_sizes_from_an_iterator_or_a_range)
 {
   const std::vector<Point> pts = cas3_test::cube_volume_sample<Point>(20);
   std::list<double> scales;  // any input range
   for(std::size_t i = 0; i < pts.size(); ++i)
     scales.push_back(1.0 + 0.01 * double(i % 7));
-  const Cas from_iterator(pts.begin(), pts.end(), CAS3::parameters::local_scales(scales.begin()));
-  const Cas from_range(pts.begin(), pts.end(), CAS3::parameters::local_scales(scales));
+  const Cas from_iterator(pts.begin(), pts.end(), CAS3::parameters::local_feature_sizes(scales.begin()));
+  const Cas from_range(pts.begin(), pts.end(), CAS3::parameters::local_feature_sizes(scales));
   auto scale = scales.begin();
   for(std::size_t i = 0; i < pts.size(); ++i, ++scale)
   {
-    BOOST_TEST(from_iterator.local_scale(from_iterator.input_vertex(i)) == *scale);
-    BOOST_TEST(from_range.local_scale(from_range.input_vertex(i)) == *scale);
+    BOOST_TEST(from_iterator.local_feature_size(from_iterator.input_vertex(i)) == *scale);
+    BOOST_TEST(from_range.local_feature_size(from_range.input_vertex(i)) == *scale);
   }
   // the caller's scales take precedence over the estimator
   const Cas both(pts.begin(), pts.end(),
-                 CAS3::parameters::local_scales(scales, CAS3::parameters::local_scale_estimator(
+                 CAS3::parameters::local_feature_sizes(scales, CAS3::parameters::local_feature_size_estimator(
                                                           CAS3::PAPER_POLE_DISTANCE)));
-  BOOST_TEST(both.local_scale(both.input_vertex(3)) == from_range.local_scale(from_range.input_vertex(3)));
+  BOOST_TEST(both.local_feature_size(both.input_vertex(3)) == from_range.local_feature_size(from_range.input_vertex(3)));
 
   scales.pop_back();
   Cas cas;
-  BOOST_CHECK_THROW(cas.make_conformal_alpha_shape(pts.begin(), pts.end(), CAS3::parameters::local_scales(scales)),
+  BOOST_CHECK_THROW(cas.make_conformal_alpha_shape(pts.begin(), pts.end(), CAS3::parameters::local_feature_sizes(scales)),
                     std::invalid_argument);
   BOOST_TEST(cas.number_of_input_points() == 0u);
 }
@@ -588,7 +588,7 @@ BOOST_AUTO_TEST_CASE(regression_fuzz_solid_labeling_id_of_out_of_range)
       {0x1.dededededededp-1, -0x1.828e81e62283fp+26, 0x1.11b850cc7363fp-47}};
   const Cas cas(pts.begin(), pts.end());
   for(Cas::Vertex_handle v : cas.finite_vertex_handles())
-    BOOST_TEST(std::isfinite(cas.local_scale(v)));
+    BOOST_TEST(std::isfinite(cas.local_feature_size(v)));
   std::vector<double> values;
   cas.boundary_facet_alphas(std::back_inserter(values));
   for(double a : values)
@@ -625,11 +625,11 @@ BOOST_AUTO_TEST_CASE(exactly_cospherical_points_give_a_valid_filtration)
         if(x * x + y * y + z * z == 50) pts.push_back(Point(x, y, z));
   BOOST_REQUIRE(pts.size() > 20u);
   // the pole distances (a sample this coarse triggers the robust floor)
-  const Cas cas(pts.begin(), pts.end(), CGAL::Conformal_alpha_shapes_3::parameters::local_scale_estimator(
+  const Cas cas(pts.begin(), pts.end(), CGAL::Conformal_alpha_shapes_3::parameters::local_feature_size_estimator(
                                           CGAL::Conformal_alpha_shapes_3::PAPER_POLE_DISTANCE));
   BOOST_TEST(cas.is_valid());
   for(auto v : cas.finite_vertex_handles())
-    BOOST_TEST(cas.local_scale(v) == std::sqrt(50.0), boost::test_tools::tolerance(1e-9));
+    BOOST_TEST(cas.local_feature_size(v) == std::sqrt(50.0), boost::test_tools::tolerance(1e-9));
   for(auto c : cas.finite_cell_handles())
   {
     BOOST_TEST(cas.conformal_alpha(c) == 1.0, boost::test_tools::tolerance(1e-9));
@@ -664,7 +664,7 @@ BOOST_AUTO_TEST_CASE(bundled_bunny_builds)
 // serial path (CI's Release build requires TBB, CAS3_REQUIRE_TBB).
 
 // Everything the construction stores, as bits: each cell's radius and
-// encroached facets, each vertex's local scale and pole (by cell index), in
+// encroached facets, each vertex's local feature size and pole (by cell index), in
 // the triangulation's order.
 std::vector<double> construction_bits(const Cas& cas)
 {
@@ -678,7 +678,7 @@ std::vector<double> construction_bits(const Cas& cas)
   }
   for(auto v : cas.finite_vertex_handles())
   {
-    bits.push_back(v->local_scale());
+    bits.push_back(v->local_feature_size());
     bits.push_back(double(v->pole_cell()->cell_index()));
   }
   return bits;

@@ -236,11 +236,11 @@ BOOST_AUTO_TEST_CASE(conformal_scales_succeed_where_every_global_alpha_fails)
   BOOST_TEST(s.euler == 0);
   BOOST_TEST(s.report.fraction_of_points_on_surface() >= 0.99);
 
-  // every local scale 1: the ordinary alpha shape, swept over 400 quantiles
+  // every local feature size 1: the ordinary alpha shape, swept over 400 quantiles
   // of its facet values (16 under the sanitizers) and around the scale where
   // the solid closes
   const std::vector<double> ones(pts.size(), 1.0);
-  const Cas global(pts.begin(), pts.end(), CAS3::parameters::local_scales(ones.begin()));
+  const Cas global(pts.begin(), pts.end(), CAS3::parameters::local_feature_sizes(ones.begin()));
   std::vector<double> values;
   global.boundary_facet_alphas(std::back_inserter(values));
   std::sort(values.begin(), values.end());

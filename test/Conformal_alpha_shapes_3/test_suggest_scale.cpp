@@ -84,14 +84,14 @@ BOOST_AUTO_TEST_CASE_TEMPLATE(closed_surfaces_of_the_right_genus_and_volume, Mes
 }
 
 // Radial noise: the surface stays a closed oriented manifold and holds
-// nearly every point, with either local scale.
+// nearly every point, with either local feature size.
 BOOST_AUTO_TEST_CASE(noisy_samples_stay_manifold)
 {
   for(double noise : {1e-4, 1e-3})
-    for(CAS3::Local_scale_estimator estimator : {CAS3::PAPER_POLE_DISTANCE, CAS3::NOISE_ROBUST_POLE_DISTANCE})
+    for(CAS3::Local_feature_size_estimator estimator : {CAS3::PAPER_POLE_DISTANCE, CAS3::NOISE_ROBUST_POLE_DISTANCE})
     {
       const auto pts = cas3_test::ellipsoid_sample<Point>(noisy_points, 1.0, 0.7, 0.4, noise);
-      const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_scale_estimator(estimator));
+      const Cas cas(pts.begin(), pts.end(), CAS3::parameters::local_feature_size_estimator(estimator));
       const Surface_facts s = extract<Surface_mesh>(cas, CAS3::suggest_scale(cas, CAS3::parameters::surface_extraction(CAS3::SOLID_BOUNDARY)), pts);
       BOOST_TEST_MESSAGE("noise " << noise << " estimator " << int(estimator) << ": "
                          << s.report.fraction_of_points_on_surface() << " of the points on the surface");

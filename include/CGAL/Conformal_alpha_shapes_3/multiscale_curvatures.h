@@ -103,9 +103,9 @@ public:
       \cgalParamType{`Surface_extraction`}
       \cgalParamDefault{`ADVANCING_FRONT`}
     \cgalParamNEnd
-    \cgalParamNBegin{local_scale_estimator}
-      \cgalParamDescription{the local scales of the shape}
-      \cgalParamType{`Local_scale_estimator`}
+    \cgalParamNBegin{local_feature_size_estimator}
+      \cgalParamDescription{the local feature sizes of the shape}
+      \cgalParamType{`Local_feature_size_estimator`}
       \cgalParamDefault{`NOISE_ROBUST_POLE_DISTANCE`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
@@ -151,8 +151,8 @@ public:
                                  choose_parameter(get_parameter(np, internal_np_cas3::denoising_neighbors), 0u));
     if(m_denoising.passes > 0)
       denoise(points, m_denoising);
-    m_shape.make_conformal_alpha_shape(points.begin(), points.end(), parameters::local_scale_estimator(
-      choose_parameter(get_parameter(np, internal_np_cas3::local_scale_estimator), NOISE_ROBUST_POLE_DISTANCE)));
+    m_shape.make_conformal_alpha_shape(points.begin(), points.end(), parameters::local_feature_size_estimator(
+      choose_parameter(get_parameter(np, internal_np_cas3::local_feature_size_estimator), NOISE_ROBUST_POLE_DISTANCE)));
   }
 
   /// the conformal alpha shape, in the working frame (see above): its
@@ -419,7 +419,7 @@ in memory, use `Multiscale_curvatures` a few layers at a time.
     \cgalParamType{`Curvature_estimator`}
     \cgalParamDefault{`QUADRIC_FIT`}
   \cgalParamNEnd
-  \cgalParamNBegin{reference_normals, noise_estimate, denoising, denoising_neighbors, surface_extraction, local_scale_estimator}
+  \cgalParamNBegin{reference_normals, noise_estimate, denoising, denoising_neighbors, surface_extraction, local_feature_size_estimator}
     \cgalParamDescription{as for `Multiscale_curvatures`}
   \cgalParamNEnd
 \cgalNamedParamsEnd

@@ -20,8 +20,8 @@ enum vertex_principal_curvatures_and_directions_map_t { vertex_principal_curvatu
 enum ring_size_t { ring_size };
 enum estimator_t { estimator };
 enum vertex_input_index_map_t { vertex_input_index_map };
-enum local_scale_estimator_t { local_scale_estimator };
-enum local_scales_t { local_scales };
+enum local_feature_size_estimator_t { local_feature_size_estimator };
+enum local_feature_sizes_t { local_feature_sizes };
 enum coverage_t { coverage };
 enum scales_t { scales };
 enum reference_normals_t { reference_normals };
@@ -75,8 +75,8 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_principal_curvatures_and_directions_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(ring_size)
 CGAL_CAS3_ADD_NAMED_PARAMETER(estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
-CGAL_CAS3_ADD_NAMED_PARAMETER(local_scale_estimator)
-CGAL_CAS3_ADD_NAMED_PARAMETER(local_scales)
+CGAL_CAS3_ADD_NAMED_PARAMETER(local_feature_size_estimator)
+CGAL_CAS3_ADD_NAMED_PARAMETER(local_feature_sizes)
 CGAL_CAS3_ADD_NAMED_PARAMETER(coverage)
 CGAL_CAS3_ADD_NAMED_PARAMETER(scales)
 CGAL_CAS3_ADD_NAMED_PARAMETER(reference_normals)

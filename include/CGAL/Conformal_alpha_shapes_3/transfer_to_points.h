@@ -341,7 +341,7 @@ void transfer_to_points(const ConformalAlphaShape& cas, const PolygonMesh& pmesh
                        std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)))};
       });
       // serially: CGAL's walks over the shape mark the vertices they visit
-      typedef internal::Local_scale_policy Policy;
+      typedef internal::Local_feature_size_policy Policy;
       for(std::size_t k = 0; k < feet.size(); ++k)
         if(feet[k].distance
            > far_from_surface() * internal::kth_shortest_edge_length<Policy::spacing_edge_rank>(cas, footless[k]))

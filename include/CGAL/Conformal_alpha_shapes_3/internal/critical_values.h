@@ -78,7 +78,7 @@ Critical_values<typename Cas::FT> edge_status(const Cas& cas, typename Cas::Cell
   typedef typename Cas::Cell_handle Cell_handle;
   typedef typename Cas::Vertex_handle Vertex_handle;
   const Vertex_handle p = c->vertex(i), q = c->vertex(j);
-  Critical_values<FT> s{edge_ordinary_alpha(cas, c, p, q) / (std::min)(p->local_scale(), q->local_scale()),
+  Critical_values<FT> s{edge_ordinary_alpha(cas, c, p, q) / (std::min)(p->local_feature_size(), q->local_feature_size()),
                     std::numeric_limits<FT>::infinity(), FT(0), false};
   typename Cas::Cell_circulator cc = cas.incident_cells(c, i, j), done = cc;
   do

@@ -19,7 +19,7 @@ namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
 // The pole of a vertex p and its distance (the manual, section "Poles and
-// Local Scales").
+// Local Feature Sizes").
 // `u` is p+ - p (p+ the farthest Voronoi vertex) on a bounded Voronoi cell
 // and the mean outward normal of the incident hull facets on an unbounded one.
 // The pole is the farthest Voronoi vertex on the side opposite to `u` (the

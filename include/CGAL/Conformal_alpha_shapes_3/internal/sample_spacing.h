@@ -26,7 +26,7 @@ namespace internal {
 // The length of the edge (p, q) from its squared length kept in float. A
 // squared length beyond float's range (lengths above 1.8e19 or below 4e-23,
 // as far outliers give) is taken again in double: an infinite spacing would
-// make the local scale infinite and the values NaN.
+// make the local feature size infinite and the values NaN.
 template <class Dt>
 double edge_length(const Dt& dt, float squared_length, typename Dt::Vertex_handle p, typename Dt::Vertex_handle q)
 {
@@ -130,27 +130,27 @@ double kth_shortest_edge_length(const Dt& dt, typename Dt::Vertex_handle v)
   return edge_length(dt, edges[k].first, v, edges[k].second);
 }
 
-// The local-scale policy of `NOISE_ROBUST_POLE_DISTANCE` (the manual, section
-// "Poles and Local Scales"): the local scale of a vertex is its pole distance
+// The local-feature-size policy of `NOISE_ROBUST_POLE_DISTANCE` (the manual, section
+// "Poles and Local Feature Sizes"): the local feature size of a vertex is its pole distance
 // (poles.h), but at least `spacing_floor_factor` times its sample spacing,
 // the length of its `spacing_edge_rank`-th shortest Delaunay edge (on a
 // surface, a vertex has at least 3 neighbors at about the spacing). A sample
 // cannot resolve features much smaller than its spacing, and the pole
 // distances that noise collapses are such features.
-struct Local_scale_policy
+struct Local_feature_size_policy
 {
   static constexpr std::size_t spacing_edge_rank = 3;
   static constexpr double spacing_floor_factor = 4;
 };
 
-// The floor of the local scale of each finite vertex (by `v->vertex_index()`)
-// under `Local_scale_policy`; `cells` as for kth_shortest_edge_lengths().
+// The floor of the local feature size of each finite vertex (by `v->vertex_index()`)
+// under `Local_feature_size_policy`; `cells` as for kth_shortest_edge_lengths().
 template <class Dt>
-std::vector<double> local_scale_floors(const Dt& dt, const std::vector<typename Dt::Cell_handle>& cells)
+std::vector<double> local_feature_size_floors(const Dt& dt, const std::vector<typename Dt::Cell_handle>& cells)
 {
-  std::vector<double> floors = kth_shortest_edge_lengths<Local_scale_policy::spacing_edge_rank>(dt, cells);
+  std::vector<double> floors = kth_shortest_edge_lengths<Local_feature_size_policy::spacing_edge_rank>(dt, cells);
   for(double& f : floors)
-    f *= Local_scale_policy::spacing_floor_factor;
+    f *= Local_feature_size_policy::spacing_floor_factor;
   return floors;
 }
 
