@@ -8,6 +8,7 @@
 #include <CGAL/jet_smooth_point_set.h>
 
 #include "cas3_test_shapes.h"
+#include "cas3_test_types.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,9 +18,7 @@
 // several test files as one translation unit.
 namespace test_denoise {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
 
 BOOST_AUTO_TEST_SUITE(denoise)
 

@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "cas3_analytic_surfaces.h"
+#include "cas3_test_types.h"
 
 #include <cmath>
 #include <vector>
@@ -15,11 +16,7 @@
 // several test files as one translation unit.
 namespace test_estimate_noise {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
 
 BOOST_AUTO_TEST_SUITE(estimate_noise)
 

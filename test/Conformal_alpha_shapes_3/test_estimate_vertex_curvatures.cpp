@@ -14,6 +14,7 @@
 #include <CGAL/tags.h>
 
 #include "cas3_test_meshes.h"
+#include "cas3_test_types.h"
 
 #include <boost/mpl/list.hpp>
 
@@ -35,14 +36,8 @@
 // several test files as one translation unit.
 namespace test_estimate_vertex_curvatures {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef CGAL::Surface_mesh<Point> Surface_mesh;
-typedef CGAL::Polyhedron_3<K> Polyhedron;
-typedef boost::mpl::list<Surface_mesh, Polyhedron> Mesh_types;
+using namespace cas3_test_types;
 
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
 typedef CAS3::Principal_curvatures_and_directions<K> Principal;
 
 // Per-vertex results of one run, in vertex order.

@@ -28,6 +28,7 @@
 #include "cas3_solid_boundary_facts.h"
 #include "cas3_test_data.h"
 #include "cas3_test_shapes.h"
+#include "cas3_test_types.h"
 
 #include <boost/mpl/list.hpp>
 
@@ -41,18 +42,7 @@
 // several test files as one translation unit.
 namespace test_extract_surface {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef CGAL::Triangulation_data_structure_3<CGAL::Conformal_alpha_shape_vertex_base_3<K>,
-                                             CGAL::Conformal_alpha_shape_cell_base_3<K> > Tds;
-typedef CGAL::Conformal_alpha_shape_3<CGAL::Delaunay_triangulation_3<K, Tds> > Cas;
-typedef CGAL::Surface_mesh<Point> Surface_mesh;
-typedef CGAL::Polyhedron_3<K> Polyhedron;
-typedef boost::mpl::list<Surface_mesh, Polyhedron> Mesh_types;
-typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
-typedef CGAL::Conformal_alpha_shapes_3::Multiscale_curvatures<K> Analysis;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using cas3_test::Surface_facts;
 using cas3_test::extract;

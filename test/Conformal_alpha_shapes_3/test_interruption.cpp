@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "cas3_test_shapes.h"
+#include "cas3_test_types.h"
 
 #include <cstddef>
 #include <functional>
@@ -21,10 +22,7 @@
 // several test files as one translation unit.
 namespace test_interruption {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
-typedef CAS3::Multiscale_curvatures<K> Analysis;
+using namespace cas3_test_types;
 
 // Large enough for the loops to reach their checks; smaller under the sanitizers.
 const std::vector<Point>& sample()

@@ -16,6 +16,7 @@
 #include "cas3_jet_fitting.h"
 #include "cas3_point_values.h"
 #include "cas3_test_shapes.h"
+#include "cas3_test_types.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,14 +33,11 @@
 // several test files as one translation unit.
 namespace test_multiscale_curvatures {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
-typedef CGAL::Conformal_alpha_shapes_3::Multiscale_curvatures<K> Analysis;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
 using cas3_test::same_bits;
 using cas3_test::sheet_points;
+using cas3_test::curvature_points;
+using cas3_test::jet_samples;
 
 // The manual's accuracy measure (METHOD.md section 7): the median, over the
 // points of `index` whose own vertex is on the surface (jet fitting: all
@@ -87,15 +85,6 @@ std::pair<int, double> best_jet_fitting(const Sample& s, const Sample& truth, co
   return best;
 }
 
-// Under the sanitizers (ten times slower), the noisy clouds have a quarter
-// of the points and jet fitting is measured at fewer of them; the documented
-// figures are those of the Release sizes.
-#ifdef CAS3_SANITIZED
-const std::size_t noisy_points = 5000, jet_samples = 1000;
-#else
-const std::size_t noisy_points = 20000, jet_samples = 5000;
-#endif
-
 double median(std::vector<double> v)
 {
   BOOST_REQUIRE(!v.empty());
@@ -122,10 +111,10 @@ BOOST_AUTO_TEST_CASE(automatic_radius_under_noise_against_jet_fitting)
     double documented;  // the automatic neighborhood's median H error, Release sizes
   };
   Case cases[] = {
-    {"ellipsoid", cas3_analytic::ellipsoid_truth_sample<Point, Vector>(noisy_points, 1, 0.7, 0.4),
-     unsigned(noisy_points + 100), 0.0259},
-    {"torus", cas3_analytic::torus_truth_sample<Point, Vector>(noisy_points, 1, 0.35),
-     unsigned(1000 + noisy_points + 100), 0.0146}};
+    {"ellipsoid", cas3_analytic::ellipsoid_truth_sample<Point, Vector>(curvature_points, 1, 0.7, 0.4),
+     unsigned(curvature_points + 100), 0.0259},
+    {"torus", cas3_analytic::torus_truth_sample<Point, Vector>(curvature_points, 1, 0.35),
+     unsigned(1000 + curvature_points + 100), 0.0146}};
   for(Case& c : cases)
   {
     cas3_analytic::add_normal_noise(c.sample, 0.1, c.noise_seed);
@@ -134,7 +123,7 @@ BOOST_AUTO_TEST_CASE(automatic_radius_under_noise_against_jet_fitting)
     BOOST_REQUIRE(layers.front().neighborhood.kind() == CAS3::Neighborhood::AUTOMATIC);
     const double automatic = median_H_error(layers.front().points, c.sample);
     const std::pair<int, double> jet = best_jet_fitting(c.sample, c.sample, {60, 120, 240, 480}, jet_samples);
-    BOOST_TEST_MESSAGE(c.name << ", " << noisy_points << " points, noise 0.1 spacings: automatic neighborhood "
+    BOOST_TEST_MESSAGE(c.name << ", " << curvature_points << " points, noise 0.1 spacings: automatic neighborhood "
                        << 100 * automatic << "%, jet fitting " << 100 * jet.second << "% at k = " << jet.first
                        << " (ratio " << automatic / jet.second << ")");
     BOOST_TEST_CONTEXT(c.name)

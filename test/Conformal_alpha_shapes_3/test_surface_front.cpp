@@ -11,6 +11,7 @@
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_point_values.h"
+#include "cas3_test_types.h"
 
 #include <algorithm>
 #include <array>
@@ -24,12 +25,7 @@
 // several test files as one translation unit.
 namespace test_surface_front {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef cas3_analytic::Truth_sample<Point, Vector> Sample;
-typedef CGAL::Conformal_alpha_shapes_3::Multiscale_curvatures<K> Analysis;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
 using cas3_test::same_bits;
 using cas3_test::sheet_points;
 

@@ -12,6 +12,7 @@
 
 #include "cas3_point_values.h"
 #include "cas3_test_shapes.h"
+#include "cas3_test_types.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -24,11 +25,7 @@
 // several test files as one translation unit.
 namespace test_transfer_to_points {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef CGAL::Conformal_alpha_shapes_3::Multiscale_curvatures<K> Analysis;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
 using cas3_test::same_bits;
 
 BOOST_AUTO_TEST_SUITE(transfer_to_points)

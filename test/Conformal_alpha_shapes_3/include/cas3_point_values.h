@@ -13,13 +13,6 @@
 
 namespace cas3_test {
 
-// Under the sanitizers (ten times slower), the sheets are checked on fewer points.
-#ifdef CAS3_SANITIZED
-const std::size_t sheet_points = 5000;
-#else
-const std::size_t sheet_points = 20000;
-#endif
-
 // Whether two estimates hold the same bits in every value.
 template <class Kernel>
 bool same_bits(const CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel>& p,

@@ -71,14 +71,6 @@ Surface_facts extract(const Shape& cas, double alpha, const std::vector<Point>& 
   return facts;
 }
 
-// Under the sanitizers (several times slower), most solid-boundary tests run
-// on smaller samples: the same properties, a third of the work.
-#ifdef CAS3_SANITIZED
-const std::size_t closed_points = 8000, noisy_points = 15000;
-#else
-const std::size_t closed_points = 20000, noisy_points = 50000;
-#endif
-
 } // namespace cas3_test
 
 #endif // CAS3_SOLID_BOUNDARY_FACTS_H
