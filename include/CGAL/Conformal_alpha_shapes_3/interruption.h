@@ -40,9 +40,9 @@ inline const std::function<bool()>*& interruption_check_of_this_thread()
 
 While an object of this class lives, the package's long computations
 started on the calling thread (the construction of a
-`Conformal_alpha_shape_3`, the advancing front, the per-point and per-vertex
-passes of denoising, curvature and transfer) call `check()` on that thread
-every 20 ms or so of their work, and throw `Interrupted` as soon as it returns
+`Conformal_alpha_shape_3`, the advancing front and the surfaces cut from
+it, the per-point and per-vertex passes of denoising, curvature and
+transfer) call `check()` on that thread every 20 ms or so of their work, and throw `Interrupted` as soon as it returns
 `true`, leaving the objects they were filling empty or unspecified (a shape
 being built is cleared). For front ends that must stay responsive: the
 Python module stops on Ctrl-C this way. Without a check the computations

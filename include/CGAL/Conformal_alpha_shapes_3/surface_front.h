@@ -7,6 +7,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/orient_surface_parts.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_output_maps.h>
+#include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/surface_report.h>
 
@@ -130,15 +131,22 @@ private:
     auto reference = [&](std::size_t s) {
       return Vector(reference_normals[*cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin()]);
     };
+    // each step below is a pass over the soup: checked between them, and
+    // within the passes that build the mesh
+    internal::Interruption_point interruption;
     if(has_reference)
       internal::cut_at_reference_folds<Vector>(soup, point, reference);
     const internal::Soup_parts parts = internal::soup_parts(soup);
+    interruption.throw_if_stopped();
     const internal::Soup_sheets sheets = internal::soup_sheets(soup, parts);
+    interruption.throw_if_stopped();
     const internal::Sheet_groups groups = has_reference
       ? internal::Sheet_groups::one_per_sheet(sheets.size())
       : internal::join_open_sheets_across_gaps<Vector>(soup, parts, sheets, point);
+    interruption.throw_if_stopped();
     const std::vector<char> reverse =
       internal::parts_to_reverse<Vector>(soup, parts, sheets, groups, point, reference, has_reference);
+    interruption.throw_if_stopped();
 
     report.number_of_parts = sheets.size();
     for(std::size_t s = 0; s < sheets.size(); ++s)
@@ -149,12 +157,18 @@ private:
 
     std::vector<vertex_descriptor> mesh_vertex(soup.shape_vertex.size());
     for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
+    {
+      if(s % 4096 == 0)
+        interruption.throw_if_stopped();
       mesh_vertex[s] =
         output.new_vertex(pmesh, point(s), *cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin());
+    }
     report.number_of_vertices = soup.shape_vertex.size();
 
     for(std::size_t t = 0; t < soup.triangles.size(); ++t)
     {
+      if(t % 4096 == 0)
+        interruption.throw_if_stopped();
       const std::array<std::size_t, 3>& tri = soup.triangles[t];
       const bool flip = reverse[parts.part_of_triangle[t]] != 0;
       const std::array<vertex_descriptor, 3> face = {mesh_vertex[tri[0]], mesh_vertex[flip ? tri[2] : tri[1]],

@@ -255,8 +255,11 @@ Advancing_front_soup advancing_front_soup(const Cas& cas)
   // are freed: the ordering's arrays were the top of the front's memory
   // peak (at 1M points, 240 of 2,550 MB), and so were the neighbors read
   // from CGAL's surface through a hash table of its faces
+  Interruption_point interruption;
   Advancing_front_soup soup = front_triangles(cas);
+  interruption.throw_if_stopped();
   pair_neighbors(soup);
+  interruption.throw_if_stopped();
   put_in_canonical_order(soup);
   return soup;
 }
