@@ -59,12 +59,9 @@ public:
 
   /// The candidates of the automatic choice, in spacings: 2 to 11.3 by
   /// factors of the square root of 2, then to 22.6 by factors of its
-  /// square root (the larger radii, where noisy samples are fitted, more
-  /// finely: the median H error of the automatic choice on the ellipsoid at
-  /// 100k points with noise 0.1 spacing, 1.49% against 1.52% with steps of
-  /// the square root of 2, and on the torus 1.53% against 1.72%; up to 19
-  /// spacings only, 2.09% and 1.18%; measured when the candidates were
-  /// fitted by quartics, see the manual).
+  /// square root: the larger radii, where noisy samples are fitted, are
+  /// sampled more finely (the manual, section Neighborhoods, compares the
+  /// steps).
   static std::vector<double> automatic_radii() { return {2, 2.83, 4, 5.66, 8, 11.3, 13.45, 16, 19, 22.6}; }
 
   Kind kind() const { return m_kind; }

@@ -124,9 +124,8 @@ struct Conformal_priority
 // them in that order), whose cells carry the shape's cell they copy and
 // whose vertices carry the shape's vertex indices (`no_vertex` for the
 // infinite one). CGAL's `copy_tds()` maps handles through hash
-// tables (330 MB at 1M points, and 4.6 s for the copy against 2.9 s this
-// way); the shape's dense indices make that a look-up, and cells are linked
-// in parallel.
+// tables; the shape's dense indices make that a look-up, and cells are
+// linked in parallel (the manual's Performance section has the figures).
 template <class Cas, class FrontTriangulation>
 void copy_triangulation(const Cas& cas, FrontTriangulation& triangulation, std::size_t no_vertex)
 {
@@ -252,9 +251,8 @@ template <class Cas>
 Advancing_front_soup advancing_front_soup(const Cas& cas)
 {
   // paired and ordered once the front and its copy of the triangulation
-  // are freed: the ordering's arrays were the top of the front's memory
-  // peak (at 1M points, 240 of 2,550 MB), and so were the neighbors read
-  // from CGAL's surface through a hash table of its faces
+  // are freed, so that the ordering's arrays do not add to the front's
+  // memory peak
   Interruption_point interruption;
   Advancing_front_soup soup = front_triangles(cas);
   interruption.throw_if_stopped();

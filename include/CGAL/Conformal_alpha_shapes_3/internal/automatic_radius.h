@@ -35,10 +35,9 @@ constexpr double residual_noise_factor = 7;
 constexpr double bias_growth_power = 2;
 // A fit whose residuals exceed this many times the noise is not a height
 // polynomial any more at its radius (the neighborhood wraps around a thin
-// part, or holds detail of its own): it and the larger radii are left out.
-// Measured on the torus at 20k points, noise 0.1 spacing (tube radius 13
-// spacings): without it the median H error of the automatic choice is 4.2%
-// (best fixed radius 2.7%), with 2 to 5 it is 2.8%.
+// part, or holds detail of its own): it and the larger radii are left out,
+// which keeps the choice off radii that wrap around a thin tube (the
+// manual, section Neighborhoods).
 constexpr double polynomial_residual_limit = 3;
 
 // A fit at one of the candidate radii of the automatic rule.
