@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "cas3_test_meshes.h"
+#include "cas3_test_types.h"
 #include "cas3_test_shapes.h"
 
 #include <algorithm>
@@ -37,14 +38,8 @@
 // several test files as one translation unit.
 namespace test_bad_input {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef CGAL::Triangulation_data_structure_3<CGAL::Conformal_alpha_shape_vertex_base_3<K>,
-                                             CGAL::Conformal_alpha_shape_cell_base_3<K> > Tds;
-typedef CGAL::Conformal_alpha_shape_3<CGAL::Delaunay_triangulation_3<K, Tds> > Cas;
-typedef CGAL::Surface_mesh<Point> Mesh;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
+typedef Surface_mesh Mesh;
 typedef CAS3::internal::Normalized_input<K> Normalized;
 
 const double qnan = std::numeric_limits<double>::quiet_NaN();

@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include "cas3_test_shapes.h"
+#include "cas3_test_types.h"
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
@@ -40,15 +41,7 @@
 // several test files as one translation unit.
 namespace test_conformal_alpha_shape_3 {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-
-typedef CGAL::Triangulation_data_structure_3<CGAL::Conformal_alpha_shape_vertex_base_3<K>,
-                                             CGAL::Conformal_alpha_shape_cell_base_3<K> > Tds;
-typedef CGAL::Delaunay_triangulation_3<K, Tds> Dt;
-typedef CGAL::Conformal_alpha_shape_3<Dt> Cas;
-namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
+using namespace cas3_test_types;
 
 typedef CGAL::Triangulation_data_structure_3<CGAL::Alpha_shape_vertex_base_3<K>,
                                              CGAL::Alpha_shape_cell_base_3<K> > Oracle_tds;
