@@ -272,7 +272,8 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
                                const std::vector<std::string>& rings, const std::string& estimator,
                                const std::string& denoise, const std::string& denoise_neighbors,
                                const std::string& extraction, int threads, py::object progress,
-                               std::optional<double> given_spacing, std::optional<double> given_noise)
+                               std::optional<double> given_spacing, std::optional<double> given_noise,
+                               bool closing_only)
 {
   const Job_options o =
     read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
@@ -294,6 +295,7 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
 
   py::list layers;
   std::unique_ptr<Analysis> analysis;
+  std::vector<double> closing;
   without_gil([&] {
     step("conformal alpha shape");
     const auto np = CAS3::parameters::reference_normals(std::cref(normals),
@@ -308,6 +310,11 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
     analysis = given_spacing ? analyze(CAS3::parameters::noise_estimate(
                                     CAS3::Noise_estimate{*given_spacing, *given_noise, *given_noise}, np))
                              : analyze(np);
+    if(closing_only)  // a tile's share of the automatic scale of a tiled run, no layers
+    {
+      closing = analysis->closing_values();
+      return 0;
+    }
     for(const CAS3::Scale& scale : o.scales)
     {
       step("surface at scale " + cas3::scale_text(scale));
@@ -343,11 +350,17 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
     outlier.mutable_data()[i] = analysis->is_outlier(i);
   const CAS3::Noise_estimate noise = analysis->noise();
   const CAS3::Denoising_plan denoising = analysis->denoising();
+  py::dict result;
+  if(closing_only)
+  {
+    py::array_t<double> values = new_array<double>(closing.size());
+    std::copy(closing.begin(), closing.end(), values.mutable_data());
+    result["closing"] = values;
+  }
   {
     py::gil_scoped_release release;  // the shape is large: other threads run while it is freed
     analysis.reset();
   }
-  py::dict result;
   result["layers"] = layers;
   result["outlier"] = outlier;
   result["spacing"] = noise.spacing;
@@ -619,7 +632,7 @@ PYBIND11_MODULE(_native, m)
   m.def("multiscale_curvatures", &multiscale_curvatures, py::arg("points"), py::arg("normals"),
         py::arg("scales"), py::arg("radii"), py::arg("rings"), py::arg("estimator"), py::arg("denoise"),
         py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"),
-        py::arg("spacing"), py::arg("noise"));
+        py::arg("spacing"), py::arg("noise"), py::arg("closing_only") = false);
   m.def("write_point_cloud", &write_point_cloud);
   m.def("read_point_cloud", &read_point_cloud);
   m.def("vertex_curvatures", &vertex_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("rings"),
