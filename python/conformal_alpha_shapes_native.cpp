@@ -595,6 +595,23 @@ py::dict vertex_curvatures(const Doubles& vertices_array,
   return layer_arrays(values);
 }
 
+// The isolated far outliers of the points, by the rule of the pipeline's
+// input hygiene (the manual, "Input Rules"): a tiled run applies it to each
+// tile with its halo before its global noise estimate.
+py::array_t<bool> input_outliers(const Doubles& points_array)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  std::vector<bool> is_outlier;
+  without_gil([&] {
+    is_outlier = CAS3::internal::normalize_input<K>(points).is_outlier;
+    return 0;
+  });
+  py::array_t<bool> out = new_array<bool>(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    out.mutable_data()[i] = is_outlier[i];
+  return out;
+}
+
 py::dict estimate_noise(const Doubles& points_array)
 {
   const std::vector<Point> points = to_triples<Point>(points_array, "points");
@@ -638,6 +655,7 @@ PYBIND11_MODULE(_native, m)
   m.def("vertex_curvatures", &vertex_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("rings"),
         py::arg("radius"), py::arg("estimator"));
   m.def("estimate_noise", &estimate_noise);
+  m.def("input_outliers", &input_outliers);
   m.def("denoise", &denoise);
   py::class_<Shape_handle>(m, "Shape")
     .def(py::init<const Doubles&, const std::optional<Doubles>&>())

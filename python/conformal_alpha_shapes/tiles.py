@@ -41,6 +41,9 @@ COVERAGE = 0.99
 # Shared points below which a seam does not vote (a corner touching a halo).
 MINIMUM_SEAM_POINTS = 20
 CHUNK = 1 << 20
+# estimate_noise()'s sample of the points and the neighbors of its fits
+NOISE_SAMPLE = 2000
+NOISE_NEIGHBORS = 24
 
 
 class TileError(ValueError):
@@ -164,6 +167,94 @@ def _tile_noise(folder, tile, has_normals):
     _, points, _, _ = _load_tile(folder, tile, has_normals, with_halo=False)
     e = estimate_noise(points)
     return len(points), e.spacing, float(e), e.noise_24
+
+
+def _tile_outliers(folder, tile, has_normals):
+    """A tile's outlier flags (the input rule on the tile with its halo), and
+    its kept core points' coordinates, sorted per axis, for the global center."""
+    from . import _native
+    index, points, _, is_core = _load_tile(folder, tile, has_normals)
+    outlier = _native.input_outliers(points)
+    tile_io.atomic_write(_tile_path(folder, tile, "outlier.npy"),
+                         lambda temporary: np.save(open(temporary, "wb"), outlier))
+    kept = points[is_core & ~outlier]
+    for axis in range(3):
+        values = np.sort(kept[:, axis])
+        tile_io.atomic_write(_tile_path(folder, tile, f"axis{axis}.npy"),
+                             lambda temporary: np.save(open(temporary, "wb"), values))
+    return {"kept": len(kept), "outliers": index[is_core & outlier].tolist()}
+
+
+def _kept_points(folder, tile, has_normals, core_only):
+    """A tile's points that are not outliers: (index, points, is_core)."""
+    index, points, _, is_core = _load_tile(folder, tile, has_normals)
+    kept = ~np.load(_tile_path(folder, tile, "outlier.npy"))
+    if core_only:
+        kept &= is_core
+    return index[kept], points[kept], is_core[kept]
+
+
+def _tile_half_radii(folder, tile, has_normals, center):
+    """Saves the sorted half radii of a tile's kept core points about ``center``
+    (the robust size's measure: the largest halved coordinate difference)."""
+    _, points, _ = _kept_points(folder, tile, has_normals, True)
+    values = np.sort(np.abs(points / 2 - np.asarray(center) / 2).max(axis=1))
+    tile_io.atomic_write(_tile_path(folder, tile, "radius.npy"),
+                         lambda temporary: np.save(open(temporary, "wb"), values))
+    return {"kept": len(values)}
+
+
+def _normalized(points, center, exponent):
+    """(p - c) / 2^e as the pipeline's working frame rounds it (halves, then an exact scaling)."""
+    return np.ldexp(points / 2 - np.asarray(center) / 2, 1 - exponent)
+
+
+def _mix_hash(h, x):
+    """SplitMix64's finalizer of ``h`` with ``x`` mixed in (order_free.h's mix_hash)."""
+    h = (h ^ x) + np.uint64(0x9E3779B97F4A7C15)
+    h = (h ^ (h >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
+    h = (h ^ (h >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
+    return h ^ (h >> np.uint64(31))
+
+
+def _coordinate_hash(q):
+    """order_free.h's coordinate_hash of each row of ``q`` (+0 and -0 alike)."""
+    h = np.zeros(len(q), dtype=np.uint64)
+    with np.errstate(over="ignore"):
+        for axis in range(3):
+            h = _mix_hash(h, np.ascontiguousarray(q[:, axis] + 0.0).view(np.uint64))
+    return h
+
+
+def _smallest_keys(index, q, count):
+    """The rows of the ``count`` smallest order-free keys (hash, x, y, z, then input index)."""
+    order = np.lexsort((index, q[:, 2], q[:, 1], q[:, 0], _coordinate_hash(q)))
+    return order[:count]
+
+
+def _tile_noise_sample(folder, tile, has_normals, center, exponent, count):
+    """A tile's kept core points with the ``count`` smallest order-free keys
+    in the working frame: (input indices, normalized points)."""
+    index, points, _ = _kept_points(folder, tile, has_normals, True)
+    q = _normalized(points, center, exponent)
+    rows = _smallest_keys(index, q, count)
+    return index[rows], q[rows]
+
+
+def _tile_noise_neighbors(folder, tile, has_normals, center, exponent, sample, neighbors):
+    """The kept points of a tile (core and halo) among the ``neighbors`` nearest
+    of each of its ``sample`` indices, ties included: (indices, normalized points)."""
+    index, points, _ = _kept_points(folder, tile, has_normals, False)
+    q = _normalized(points, center, exponent)
+    rows = np.searchsorted(index, sample)
+    chosen = []
+    for row in rows:
+        distance = ((q - q[row]) ** 2).sum(axis=1)
+        k = min(neighbors, len(q) - 1)
+        limit = np.partition(distance, k)[k]
+        chosen.append(np.flatnonzero(distance <= limit * (1 + 1e-9)))
+    chosen = np.unique(np.concatenate(chosen)) if chosen else np.empty(0, np.int64)
+    return index[chosen], q[chosen]
 
 
 def _tile_closing(folder, tile, has_normals, job):
@@ -340,22 +431,32 @@ def _run_tasks(client, function, arguments, stage, points, quiet, on_result):
         future.release()
 
 
+def _ordered_keys(values):
+    """Integers in the order of the doubles ``values``."""
+    bits = np.asarray(values, dtype=np.float64).view(np.int64)
+    return bits ^ ((bits >> 63) & np.int64(0x7FFFFFFFFFFFFFFF))
+
+
+def _key_value(key):
+    """The double whose ordered key is ``key`` (the map is its own inverse)."""
+    return float(_ordered_keys(np.array([key], dtype=np.int64).view(np.float64)).view(np.float64)[0])
+
+
 def _kth_smallest(paths, k):
     """The ``k``-th smallest (from 0) of the values of sorted ``.npy`` files
-    pooled, exactly, by bisection over the bits of non-negative doubles."""
-    arrays = [np.load(path, mmap_mode="r") for path in paths]
-    arrays = [a for a in arrays if len(a)]
-    if min(float(a[0]) for a in arrays) < 0:
-        return float(np.partition(np.concatenate([np.asarray(a) for a in arrays]), k)[k])
-    lo, hi = 0, int(np.float64(max(float(a[-1]) for a in arrays)).view(np.int64))
-    while lo < hi:  # the smallest bit pattern with more than k values at or below it
+    pooled, exactly: a bisection over the doubles' bit patterns, counting
+    with a binary search in each file (memory-mapped)."""
+    arrays = [a for a in (np.load(path, mmap_mode="r") for path in paths) if len(a)]
+    lo = int(min(_ordered_keys(a[:1])[0] for a in arrays))
+    hi = int(max(_ordered_keys(a[-1:])[0] for a in arrays))
+    while lo < hi:  # the smallest value with more than k values at or below it
         middle = (lo + hi) // 2
-        value = np.int64(middle).view(np.float64)
+        value = _key_value(middle)
         if sum(int(np.searchsorted(a, value, side="right")) for a in arrays) > k:
             hi = middle
         else:
             lo = middle + 1
-    return float(np.int64(lo).view(np.float64))
+    return _key_value(lo)
 
 
 def _weighted_median(values, weights):
@@ -482,7 +583,8 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
 
 
 def _partition(cloud, output, options, manifest, save, client, quiet):
-    """The tiles' cores, the global spacing and noise, then the halos (in the manifest)."""
+    """The tiles' cores, then their halos (from a first spacing, pooled over
+    the tiles), then the spacing and noise of one run (in the manifest)."""
     has_normals = cloud.has_normals
     if "tree" not in manifest:
         stride = max(1, cloud.count // 1_000_000)
@@ -496,22 +598,65 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         manifest.update(tree=tree, tiles=tiles, core=core, center=(total / cloud.count).tolist())
         save()
     tiles, tree = manifest["tiles"], manifest["tree"]
-    if "spacing" not in manifest:
+    if "halo_spacings" not in manifest:
         estimates = {}
-        _run_tasks(client, _tile_noise, [(t, (output, t, has_normals)) for t in range(tiles)], "noise",
+        _run_tasks(client, _tile_noise, [(t, (output, t, has_normals)) for t in range(tiles)], "spacing",
                    cloud.count, quiet, lambda t, value: estimates.__setitem__(t, value))
         counts = np.array([estimates[t][0] for t in range(tiles)], dtype=np.float64)
-        values = np.array([estimates[t][1:] for t in range(tiles)])
-        spacing = float(np.average(values[:, 0], weights=counts))
-        noise = _weighted_median(values[:, 1], counts)
-        noise_24 = _weighted_median(values[:, 2], counts)
-        calls = noise > 0.02 and noise_24 <= 1.3 * noise  # Noise_estimate::calls_for_denoising()
-        denoise = options["denoise"] if options["denoise"] != "auto" else ("on" if calls else "off")
-        margin = (options["halo"] or halo_spacings(options["radii"], options["rings"], spacing)) * spacing
-        _write_tile_files(cloud, tree, tiles, output, margin, "halo")
-        manifest.update(spacing=spacing, noise=noise, noise_24=noise_24, denoise=denoise,
-                        halo_spacings=margin / spacing)
+        first_spacing = float(np.average([estimates[t][1] for t in range(tiles)], weights=counts))
+        halo = options["halo"] or halo_spacings(options["radii"], options["rings"], first_spacing)
+        _write_tile_files(cloud, tree, tiles, output, halo * first_spacing, "halo")
+        manifest.update(halo_spacings=halo, first_spacing=first_spacing)
         save()
+    if "spacing" not in manifest:
+        manifest.update(_global_noise(client, cloud, output, tiles, quiet))
+        calls = manifest["noise"] > 0.02 and manifest["noise_24"] <= 1.3 * manifest["noise"]
+        manifest["denoise"] = options["denoise"] if options["denoise"] != "auto" else ("on" if calls else "off")
+        save()
+
+
+def _global_noise(client, cloud, output, tiles, quiet):
+    """The noise estimate of one run, from the tiles: the outliers left out,
+    the working frame (the kept points' per-axis median and robust size, by
+    exact selection over the tiles), the sample of the points with the
+    smallest order-free keys in that frame, and ``estimate_noise()`` on that
+    sample with the neighbors of its fits, which it gives as on the whole cloud."""
+    from . import estimate_noise
+    has_normals = cloud.has_normals
+    kept, outliers = {}, []
+
+    def outliers_done(t, value):
+        kept[t] = value["kept"]
+        outliers.extend(value["outliers"])
+    _run_tasks(client, _tile_outliers, [(t, (output, t, has_normals)) for t in range(tiles)], "outliers",
+               cloud.count, quiet, outliers_done)
+    n = sum(kept.values())
+    center = [_kth_smallest([_tile_path(output, t, f"axis{axis}.npy") for t in range(tiles)], n // 2)
+              for axis in range(3)]
+    _run_tasks(client, _tile_half_radii, [(t, (output, t, has_normals, center)) for t in range(tiles)],
+               "working frame", cloud.count, True, lambda t, value: None)
+    radii = [_tile_path(output, t, "radius.npy") for t in range(tiles)]
+    h = _kth_smallest(radii, n // 2)
+    if not h > 0:
+        h = max(float(np.load(path, mmap_mode="r")[-1]) for path in radii if kept[radii.index(path)])
+    exponent = int(np.frexp(h)[1]) + 1 if h > 0 else 0  # ilogb(h) + 2
+    futures = [client.submit(_tile_noise_sample, output, t, has_normals, center, exponent, NOISE_SAMPLE,
+                             retries=3, pure=False) for t in range(tiles)]
+    samples = client.gather(futures)
+    index = np.concatenate([s[0] for s in samples])
+    q = np.concatenate([s[1] for s in samples])
+    owner = np.concatenate([np.full(len(s[0]), t) for t, s in enumerate(samples)])
+    chosen = _smallest_keys(index, q, NOISE_SAMPLE)
+    futures = [client.submit(_tile_noise_neighbors, output, t, has_normals, center, exponent,
+                             np.sort(index[chosen][owner[chosen] == t]), NOISE_NEIGHBORS, retries=3, pure=False)
+               for t in range(tiles) if np.any(owner[chosen] == t)]
+    found = client.gather(futures)
+    index = np.concatenate([f[0] for f in found])
+    q = np.concatenate([f[1] for f in found])
+    _, rows = np.unique(index, return_index=True)
+    estimate = estimate_noise(q[rows])
+    return {"spacing": float(np.ldexp(estimate.spacing, exponent)), "noise": float(estimate),
+            "noise_24": estimate.noise_24, "outliers": len(outliers), "working_frame": [center, exponent]}
 
 
 def _automatic_scale(client, cloud, output, manifest, save, job, quiet):
