@@ -70,11 +70,11 @@ def client():
 
 @pytest.fixture(scope="module")
 def scene_run(client, tmp_path_factory):
-    """A 120k-point scene in 8 tiles, merged, and one run of the module on it."""
+    """An 80k-point scene in 8 tiles, merged, and one run of the module on it."""
     folder = tmp_path_factory.mktemp("scene")
-    points, label = scene(120_000)
+    points, label = scene(80_000)
     np.save(folder / "scene.npy", points)
-    summary = tiles.process_tiles(folder / "scene.npy", folder / "out", tile_points=15_000, client=client,
+    summary = tiles.process_tiles(folder / "scene.npy", folder / "out", tile_points=10_000, client=client,
                                   merge=True, quiet=True)
     one = cas.multiscale_curvatures(points)
     return points, label, summary, one, folder
@@ -190,10 +190,10 @@ def test_scheduler_and_workers_on_localhost(tmp_path):
                 if time.monotonic() > deadline or services[0].poll() is not None:
                     pytest.fail(f"dask-scheduler and 2 dask-workers on {address} did not start: {e!r}")
                 time.sleep(0.5)
-        points, _ = scene(20_000, seed=5)
+        points, _ = scene(12_000, seed=5)
         np.save(tmp_path / "small.npy", points)
         run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / "small.npy"),
-                              "--output", str(tmp_path / "out"), "--tile-points", "10000", "--scheduler", address,
+                              "--output", str(tmp_path / "out"), "--tile-points", "6000", "--scheduler", address,
                               "--merge", "--radius", "auto,4s"], env=environment, capture_output=True, text=True,
                              timeout=300)
         assert run.returncode == 0, run.stderr
@@ -215,9 +215,9 @@ def test_scheduler_and_workers_on_localhost(tmp_path):
 def fault_input(client, tmp_path_factory):
     """A cloud in 4 tiles and its undisturbed tiled run (merged)."""
     folder = tmp_path_factory.mktemp("faults")
-    points, _ = scene(40_000, seed=7)
+    points, _ = scene(24_000, seed=7)
     np.save(folder / "cloud.npy", points)
-    tiles.process_tiles(folder / "cloud.npy", folder / "undisturbed", tile_points=10_000, client=client,
+    tiles.process_tiles(folder / "cloud.npy", folder / "undisturbed", tile_points=6_000, client=client,
                         merge=True, quiet=True, radii=("auto", "4s"))
     with open(folder / "undisturbed" / "curvatures.ply", "rb") as f:
         return folder, f.read()
@@ -233,20 +233,19 @@ def test_a_killed_worker_is_replaced_and_the_output_is_the_same(fault_input, tmp
         with Client(cluster) as c:
             pids = list(c.run(os.getpid).values())
 
-            def kill_when_curvature_starts():
-                parts = tmp_path / "out" / "parts"
+            def kill_mid_run():
+                """Kills a worker once the first tile's closing values are written (tiles in flight)."""
+                folder_of_tiles = tmp_path / "out" / "tiles"
                 deadline = time.monotonic() + 120
                 while time.monotonic() < deadline and not killed:
-                    if (tmp_path / "out" / "tiles").exists() and any(
-                            name.startswith("closing_") for name in os.listdir(tmp_path / "out" / "tiles")):
-                        time.sleep(0.3)
+                    if folder_of_tiles.exists() and any(name.startswith("closing_")
+                                                        for name in os.listdir(folder_of_tiles)):
                         os.kill(pids[0], signal.SIGKILL)
                         killed.append(pids[0])
-                    time.sleep(0.05)
-                del parts
-            killer = threading.Thread(target=kill_when_curvature_starts)
+                    time.sleep(0.02)
+            killer = threading.Thread(target=kill_mid_run)
             killer.start()
-            tiles.process_tiles(folder / "cloud.npy", tmp_path / "out", tile_points=10_000, client=c, merge=True,
+            tiles.process_tiles(folder / "cloud.npy", tmp_path / "out", tile_points=6_000, client=c, merge=True,
                                 quiet=True, radii=("auto", "4s"))
             killer.join()
     finally:
@@ -259,7 +258,7 @@ def test_a_killed_worker_is_replaced_and_the_output_is_the_same(fault_input, tmp
 def test_an_interrupted_run_restarts_from_its_parts(fault_input, tmp_path):
     folder, expected = fault_input
     command = [sys.executable, "-m", "conformal_alpha_shapes.tiles", str(folder / "cloud.npy"), "--output",
-               str(tmp_path / "out"), "--tile-points", "10000", "--workers", "2", "--merge", "--radius", "auto,4s"]
+               str(tmp_path / "out"), "--tile-points", "6000", "--workers", "2", "--merge", "--radius", "auto,4s"]
     first = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     parts = tmp_path / "out" / "parts"
     deadline = time.monotonic() + 180
