@@ -21,6 +21,7 @@ __all__ = [
     "Cloud",
     "open_cloud",
     "atomic_write",
+    "save_array",
     "part_dtype",
     "write_part",
     "read_part",
@@ -251,6 +252,14 @@ _LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d
                  "radius", "distance")
 
 
+def save_array(path, values):
+    """Writes a numpy array as ``.npy``, atomically."""
+    def write(temporary):
+        with open(temporary, "wb") as f:
+            np.save(f, values)
+    atomic_write(path, write)
+
+
 def part_dtype(layers, with_index=True):
     """The record of ``curvatures.ply`` for layer names ``layers`` (plus ``input_index``)."""
     fields = [("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("outlier", "u1")]
@@ -335,7 +344,7 @@ def read_manifest(path):
 
 
 def write_manifest(path, manifest):
-    """Writes the manifest as JSON, atomically."""
+    """Writes the manifest (or any dict) as JSON, atomically."""
     def write(temporary):
         with open(temporary, "w") as f:
             json.dump(manifest, f, indent=1, sort_keys=True)

@@ -175,14 +175,12 @@ def _tile_outliers(folder, tile, has_normals):
     from . import _native
     index, points, _, is_core = _load_tile(folder, tile, has_normals)
     outlier = _native.input_outliers(points)
-    tile_io.atomic_write(_tile_path(folder, tile, "outlier.npy"),
-                         lambda temporary: np.save(open(temporary, "wb"), outlier))
+    tile_io.save_array(_tile_path(folder, tile, "outlier.npy"), outlier)
     kept = points[is_core & ~outlier]
     for axis in range(3):
         values = np.sort(kept[:, axis])
-        tile_io.atomic_write(_tile_path(folder, tile, f"axis{axis}.npy"),
-                             lambda temporary: np.save(open(temporary, "wb"), values))
-    return {"kept": len(kept), "outliers": index[is_core & outlier].tolist()}
+        tile_io.save_array(_tile_path(folder, tile, f"axis{axis}.npy"), values)
+    return {"kept": len(kept), "outliers": index[is_core & outlier].tolist(), "core": int(is_core.sum())}
 
 
 def _kept_points(folder, tile, has_normals, core_only):
@@ -199,8 +197,7 @@ def _tile_half_radii(folder, tile, has_normals, center):
     (the robust size's measure: the largest halved coordinate difference)."""
     _, points, _ = _kept_points(folder, tile, has_normals, True)
     values = np.sort(np.abs(points / 2 - np.asarray(center) / 2).max(axis=1))
-    tile_io.atomic_write(_tile_path(folder, tile, "radius.npy"),
-                         lambda temporary: np.save(open(temporary, "wb"), values))
+    tile_io.save_array(_tile_path(folder, tile, "radius.npy"), values)
     return {"kept": len(values)}
 
 
@@ -267,7 +264,7 @@ def _tile_closing(folder, tile, has_normals, job):
                                    spacing=job["spacing"], noise=job["noise"])
     values = np.sort(closing[is_core & ~np.isnan(closing)])
     path = os.path.join(folder, "tiles", f"closing_{tile:05d}.npy")
-    tile_io.atomic_write(path, lambda temporary: np.save(open(temporary, "wb"), values))
+    tile_io.save_array(path, values)
     return {"count": len(values), "seconds": time.monotonic() - started, "memory": _peak_memory(),
             "points": len(points), "core": int(is_core.sum())}
 
@@ -339,7 +336,7 @@ def _tile_curvatures(folder, tile, has_normals, job, center, tree):
     seam_records["index"] = index[halo]
     seam_records["owner"] = _owner(tree, points[halo])
     seam_records["normal"] = np.moveaxis(seam_normals, 0, 1)
-    tile_io.atomic_write(seam, lambda temporary: np.save(open(temporary, "wb"), seam_records))
+    tile_io.save_array(seam, seam_records)
     # the cone each scale's surface spans from the cloud's center, on the core's own vertices
     cones = []
     for layer in first_layers:
@@ -516,8 +513,9 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
             ``.npy`` of shape (N, 3) or (N, 6) (memory-mapped) or a ``.xyz``.
         output: the folder of the run: ``parts/part_NNNNN.ply`` (each tile's
             core points, the fields of the program's ``curvatures.ply`` plus
-            ``input_index``), ``manifest.json``, ``tiles/`` (the tiles'
-            points) and with ``merge`` ``curvatures.ply`` in input order.
+            ``input_index``), ``manifest.json``, ``summary.json`` (what this
+            returns), ``tiles/`` (the tiles' points and intermediate values)
+            and with ``merge`` ``curvatures.ply`` in input order.
             Every worker must read and write it (local disk or a shared file system).
         tile_points: the target number of core points per tile.
         workers: worker processes of the embedded LocalCluster (default: one per core).
@@ -577,6 +575,7 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
                             [_part_path(output, t) for t in range(manifest["tiles"])], names,
                             manifest["descriptions"], cloud.count)
     summary["seconds"] = time.monotonic() - started
+    tile_io.write_manifest(os.path.join(output, "summary.json"), summary)
     if not quiet:
         print(format_summary(summary), file=sys.stderr)
     return summary
