@@ -44,6 +44,9 @@ CHUNK = 1 << 20
 # estimate_noise()'s sample of the points and the neighbors of its fits
 NOISE_SAMPLE = 2000
 NOISE_NEIGHBORS = 24
+# The halo, in first spacings, of the outlier rule's 6 and the noise fits' 24
+# nearest neighbors (a few spacings), before the spacing of one run is known.
+NEAR_HALO_SPACINGS = 8.0
 
 
 class TileError(ValueError):
@@ -582,8 +585,9 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
 
 
 def _partition(cloud, output, options, manifest, save, client, quiet):
-    """The tiles' cores, then their halos (from a first spacing, pooled over
-    the tiles), then the spacing and noise of one run (in the manifest)."""
+    """The tiles' cores; near halos (a few spacings, from a first spacing
+    pooled over the tiles) for the spacing and noise of one run; then the
+    halos of the rule in that spacing (all in the manifest)."""
     has_normals = cloud.has_normals
     if "tree" not in manifest:
         stride = max(1, cloud.count // 1_000_000)
@@ -597,20 +601,24 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         manifest.update(tree=tree, tiles=tiles, core=core, center=(total / cloud.count).tolist())
         save()
     tiles, tree = manifest["tiles"], manifest["tree"]
-    if "halo_spacings" not in manifest:
+    if "first_spacing" not in manifest:
         estimates = {}
-        _run_tasks(client, _tile_noise, [(t, (output, t, has_normals)) for t in range(tiles)], "spacing",
+        _run_tasks(client, _tile_noise, [(t, (output, t, has_normals)) for t in range(tiles)], "first spacing",
                    cloud.count, quiet, lambda t, value: estimates.__setitem__(t, value))
         counts = np.array([estimates[t][0] for t in range(tiles)], dtype=np.float64)
         first_spacing = float(np.average([estimates[t][1] for t in range(tiles)], weights=counts))
-        halo = options["halo"] or halo_spacings(options["radii"], options["rings"], first_spacing)
-        _write_tile_files(cloud, tree, tiles, output, halo * first_spacing, "halo")
-        manifest.update(halo_spacings=halo, first_spacing=first_spacing)
+        _write_tile_files(cloud, tree, tiles, output, NEAR_HALO_SPACINGS * first_spacing, "halo")
+        manifest.update(first_spacing=first_spacing)
         save()
     if "spacing" not in manifest:
         manifest.update(_global_noise(client, cloud, output, tiles, quiet))
         calls = manifest["noise"] > 0.02 and manifest["noise_24"] <= 1.3 * manifest["noise"]
         manifest["denoise"] = options["denoise"] if options["denoise"] != "auto" else ("on" if calls else "off")
+        save()
+    if "halo_spacings" not in manifest:
+        halo = options["halo"] or halo_spacings(options["radii"], options["rings"], manifest["spacing"])
+        _write_tile_files(cloud, tree, tiles, output, halo * manifest["spacing"], "halo")
+        manifest.update(halo_spacings=halo)
         save()
 
 
