@@ -156,6 +156,14 @@ def test_an_open_sheet_across_many_tiles(client, tmp_path):
     up = np.mean(normal[on, 2] > 0)
     assert max(up, 1 - up) >= 0.99
     assert summary["worst_seam_agreement"] >= 0.99
+    # input normals decide, as in one run: all down here
+    down = np.tile([0.0, 0.0, -1.0], (len(points), 1))
+    np.save(tmp_path / "sheet_normals.npy", np.hstack([points, down]))
+    summary = tiles.process_tiles(tmp_path / "sheet_normals.npy", tmp_path / "with_normals", tile_points=2_100,
+                                  client=client, merge=True, quiet=True, radii=("4s",))
+    assert summary["flipped"] == []
+    normal = normals_of(read_merged(tmp_path / "with_normals", summary["layers"]), "r4s")
+    assert np.mean(normal[np.isfinite(normal[:, 0]), 2] < 0) >= 0.99
 
 
 def free_port():
