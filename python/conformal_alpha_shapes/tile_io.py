@@ -59,18 +59,6 @@ class Cloud:
         """The cloud in order, ``size`` points at a time."""
         return self._reader(size)
 
-    def read(self, indices):
-        """The points (and normals or None) at increasing ``indices``, read chunk by chunk."""
-        indices = np.asarray(indices, dtype=np.int64)
-        points = np.empty((len(indices), 3))
-        normals = np.empty((len(indices), 3)) if self.has_normals else None
-        for start, p, n in self.chunks(1 << 20):
-            lo, hi = np.searchsorted(indices, [start, start + len(p)])
-            points[lo:hi] = p[indices[lo:hi] - start]
-            if normals is not None:
-                normals[lo:hi] = n[indices[lo:hi] - start]
-        return points, normals
-
 
 def _structured_reader(records, names):
     """Chunks of the fields x y z (and nx ny nz) of a structured array (a memory map)."""

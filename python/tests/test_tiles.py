@@ -3,7 +3,6 @@ the answer of one run; the scheduler-and-workers path; seams; faults; bad
 input; atomic writes. Small clouds, so that the file runs in about 100 s on
 two cores; a service that cannot start fails the test."""
 import os
-import shutil
 import signal
 import socket
 import subprocess
