@@ -28,7 +28,7 @@ import numpy as np
 
 from . import tile_io
 
-__all__ = ["process_tiles", "halo_spacings", "main"]
+__all__ = ["process_tiles", "halo_spacings", "format_summary", "main"]
 
 # The automatic radius's largest candidate, in spacings (the manual, "Neighborhoods").
 AUTOMATIC_RADIUS_SPACINGS = 22.6
