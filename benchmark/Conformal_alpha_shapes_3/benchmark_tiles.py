@@ -12,7 +12,8 @@ above an open wavy sheet, Gaussian noise of 0.1 spacings, 5 far outliers.
 One run is ``multiscale_curvatures`` in a process of its own with TBB on
 every core (the program's values to the last bit); the tiled run is
 ``python3 -m conformal_alpha_shapes.tiles`` with an embedded LocalCluster.
-With --no-one-run only the tiled run (clouds one process cannot hold).
+With --no-one-run only the tiled run (clouds one process cannot hold);
+with --input FILE a scan instead of the scene (with its normals, if any).
 """
 import argparse
 import json
@@ -32,9 +33,10 @@ ONE_RUN = r"""
 import json, resource, sys, time
 import numpy as np
 import conformal_alpha_shapes as cas
-points = np.load(sys.argv[1], mmap_mode="r")
+cloud = np.load(sys.argv[1])
+points, normals = cloud[:, :3], (cloud[:, 3:] if cloud.shape[1] == 6 else None)
 start, cpu = time.perf_counter(), time.process_time()
-r = cas.multiscale_curvatures(points)
+r = cas.multiscale_curvatures(points, normals)
 wall, cpu = time.perf_counter() - start, time.process_time() - cpu
 np.savez(sys.argv[2], outlier=r.outlier, **{f"n_{k}": r[k].normal.astype(np.float32) for k in r.layers},
          **{f"H_{k}": r[k].H for k in r.layers})
@@ -79,12 +81,18 @@ def main():
     parser.add_argument("--points", type=int, default=1_000_000)
     parser.add_argument("--tile-points", type=int, default=250_000)
     parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--input", default=None,
+                        help="a cloud the program reads (.xyz, .ply, ...) instead of the scene, with its normals")
     parser.add_argument("--folder", default=None, help="where the cloud and the outputs go (default: a temporary one)")
     parser.add_argument("--no-one-run", action="store_true")
     args = parser.parse_args()
     folder = args.folder or tempfile.mkdtemp(prefix="benchmark_tiles_")
     cloud = os.path.join(folder, "scene.npy")
-    if not os.path.exists(cloud):
+    if args.input:
+        from conformal_alpha_shapes import read_point_cloud
+        points, normals = read_point_cloud(args.input)
+        np.save(cloud, points if normals is None else np.hstack([points, normals]))
+    elif not os.path.exists(cloud):
         np.save(cloud, scene(args.points)[0])
     result = {"points": int(np.load(cloud, mmap_mode="r").shape[0]), "tile_points": args.tile_points,
               "workers": args.workers}
