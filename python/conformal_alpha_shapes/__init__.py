@@ -224,9 +224,9 @@ class Result:
             raise
 
 
-def _run_job(points, normals, scales, radii, rings, estimator, denoise, denoise_neighbors, extraction,
-             threads, progress, spacing, noise, closing_only):
-    """The checked arguments of ``multiscale_curvatures`` given to the native job: (points, its dict)."""
+def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors, extraction, threads,
+                   progress, spacing, noise):
+    """The checked arguments of the native job but its scales: (points, normals, the rest as it takes them)."""
     if (spacing is None) != (noise is None):
         raise ValueError("spacing and noise are given together (the decisions of a larger run) or not at all")
     for name, value in (("spacing", spacing), ("noise", noise)):
@@ -245,14 +245,19 @@ def _run_job(points, normals, scales, radii, rings, estimator, denoise, denoise_
         raise TypeError(f"denoise_neighbors must be an int or None, got {denoise_neighbors!r}")
     if progress is not None and not callable(progress):
         raise TypeError(f"progress must be callable as progress(stage, fraction), got {progress!r}")
-    native = _native.multiscale_curvatures(
-        points, normals, _option_items(scales, "scales"), _option_items(radii, "radii"),
-        _option_items(rings, "rings", integers=True),
-        _choice(estimator, "estimator"), _choice(denoise, "denoise"),
-        "" if denoise_neighbors is None else str(int(denoise_neighbors)),
-        _choice(extraction, "extraction"), _threads(threads), progress,
-        None if spacing is None else float(spacing), None if noise is None else float(noise), closing_only)
-    return points, native
+    return (points, normals, _option_items(radii, "radii"), _option_items(rings, "rings", integers=True),
+            _choice(estimator, "estimator"), _choice(denoise, "denoise"),
+            "" if denoise_neighbors is None else str(int(denoise_neighbors)),
+            _choice(extraction, "extraction"), _threads(threads), progress,
+            None if spacing is None else float(spacing), None if noise is None else float(noise))
+
+
+def _job(points, normals=None, *, radii=("auto",), rings=(), estimator="quadric", denoise="auto",
+         denoise_neighbors=None, extraction="front", threads=None, progress=None, spacing=None, noise=None):
+    """The native job of these points and options, its shape built: ``closing_values()``,
+    ``result(scales, progress)`` (the dict ``Result`` takes) and ``release()``."""
+    return _native.Job(*_job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors,
+                                       extraction, threads, progress, spacing, noise))
 
 
 def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("auto", "2s", "4s", "8s", "16s"),
@@ -312,8 +317,10 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
         TypeError: arrays that are not of real numbers, options of the wrong type.
         KeyboardInterrupt: Ctrl-C (within a fraction of a second, the work unwound).
     """
-    points, native = _run_job(points, normals, scales, radii, rings, estimator, denoise, denoise_neighbors,
-                              extraction, threads, progress, spacing, noise, closing_only=False)
+    arguments = _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors, extraction,
+                               threads, progress, spacing, noise)
+    points = arguments[0]
+    native = _native.multiscale_curvatures(points, arguments[1], _option_items(scales, "scales"), *arguments[2:])
     return Result(points, native)
 
 
@@ -334,9 +341,11 @@ def front_closing_values(points, normals=None, *, denoise="auto", denoise_neighb
         (N,) float64: NaN for outliers, for points the front does not reach
         and for all but the first of coincident points (they share a vertex).
     """
-    _, native = _run_job(points, normals, ("auto",), ("auto",), (), "quadric", denoise, denoise_neighbors,
-                         "front", threads, progress, spacing, noise, closing_only=True)
-    return native["closing"]
+    job = _job(points, normals, denoise=denoise, denoise_neighbors=denoise_neighbors, threads=threads,
+               progress=progress, spacing=spacing, noise=noise)
+    closing = job.closing_values()
+    job.release()
+    return closing
 
 
 class ConformalAlphaShape:

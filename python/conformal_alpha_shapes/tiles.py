@@ -38,6 +38,11 @@ AUTOMATIC_RADIUS_SPACINGS = 22.6
 FRONT_REACH_SPACINGS = 8.0
 # The share of the front's vertices the automatic scale covers (suggest_scale's default).
 COVERAGE = 0.99
+# What a tile's shape held between phases weighs per point with halo, and
+# the share of the workers' memory that the held shapes may take (the manual,
+# "Tiled Processing on Dask", measures the weight).
+SHAPE_BYTES_PER_POINT = 2300
+HELD_SHAPES_SHARE = 0.5
 # Shared points below which a seam does not vote (a corner touching a halo).
 MINIMUM_SEAM_POINTS = 20
 CHUNK = 1 << 20
@@ -257,19 +262,68 @@ def _tile_noise_neighbors(folder, tile, has_normals, center, exponent, sample, n
     return index[chosen], q[chosen]
 
 
-def _tile_closing(folder, tile, has_normals, job):
-    """Writes the sorted closing values of a tile's core points; returns their number."""
-    from . import front_closing_values
+class _TileShape:
+    """A tile's points and its job, the shape built (``conformal_alpha_shapes._job``).
+
+    A future holds one on its worker between the closing values and the
+    curvature. Moved to another worker or spilled, it travels as its tile and
+    options only, and is built again by the task that uses it.
+    """
+
+    def __init__(self, folder, tile, has_normals, job, build=True):
+        self.arguments = (folder, tile, has_normals, job)
+        self.index, self.points, self.normals, self.is_core = _load_tile(folder, tile, has_normals)
+        self.native = self._build() if build else None
+
+    def _build(self):
+        from . import _job
+        job = self.arguments[3]
+        return _job(self.points, self.normals, radii=job["radii"], rings=job["rings"],
+                    estimator=job["estimator"], denoise=job["denoise"], denoise_neighbors=job["denoise_neighbors"],
+                    extraction=job["extraction"], threads=job["threads"], spacing=job["spacing"],
+                    noise=job["noise"])
+
+    def built(self):
+        """The native job, built here if it came unbuilt."""
+        if self.native is None:
+            self.native = self._build()
+        return self.native
+
+    def __reduce__(self):
+        return (_TileShape, self.arguments + (False,))
+
+
+def _shape_size(shape):
+    """What a held shape weighs, for Dask's memory accounting."""
+    return SHAPE_BYTES_PER_POINT * len(shape.points)
+
+
+def _register_shape_size():
+    from dask.sizeof import sizeof
+    sizeof.register(_TileShape)(_shape_size)
+
+
+_register_shape_size()
+
+
+def _tile_shape(folder, tile, has_normals, job):
+    """A tile's shape, to be held on its worker."""
+    return _TileShape(folder, tile, has_normals, job)
+
+
+def _tile_closing(folder, tile, has_normals, job, shape=None):
+    """Writes the sorted closing values of a tile's core points (of ``shape``,
+    held on this worker, or of a shape built here); returns their number."""
     started = time.monotonic()
-    _, points, normals, is_core = _load_tile(folder, tile, has_normals)
-    closing = front_closing_values(points, normals, denoise=job["denoise"],
-                                   denoise_neighbors=job["denoise_neighbors"], threads=job["threads"],
-                                   spacing=job["spacing"], noise=job["noise"])
-    values = np.sort(closing[is_core & ~np.isnan(closing)])
-    path = os.path.join(folder, "tiles", f"closing_{tile:05d}.npy")
-    tile_io.save_array(path, values)
+    held = shape is not None
+    shape = shape if held else _TileShape(folder, tile, has_normals, job)
+    closing = shape.built().closing_values()
+    if not held:
+        shape.native.release()
+    values = np.sort(closing[shape.is_core & ~np.isnan(closing)])
+    tile_io.save_array(os.path.join(folder, "tiles", f"closing_{tile:05d}.npy"), values)
     return {"count": len(values), "seconds": time.monotonic() - started, "memory": _peak_memory(),
-            "points": len(points), "core": int(is_core.sum())}
+            "points": len(shape.points), "core": int(shape.is_core.sum())}
 
 
 def _scale_text(a):
@@ -293,16 +347,17 @@ def _part_path(folder, tile):
     return os.path.join(folder, "parts", f"part_{tile:05d}.ply")
 
 
-def _tile_curvatures(folder, tile, has_normals, job, center, tree):
-    """A tile's curvature: its part (core points), its seam file (halo points'
-    normals, per scale) and what the driver needs (layer names, cone sums)."""
-    from . import multiscale_curvatures
+def _tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
+    """A tile's curvature (of ``shape``, held on this worker, or of a shape
+    built here): its part (core points), its seam file (halo points' normals,
+    per scale) and what the driver needs (layer names, cone sums)."""
+    from . import Result, _option_items
     started = time.monotonic()
-    index, points, normals, is_core = _load_tile(folder, tile, has_normals)
-    result = multiscale_curvatures(points, normals, scales=job["tile_scales"], radii=job["radii"],
-                                   rings=job["rings"], estimator=job["estimator"], denoise=job["denoise"],
-                                   denoise_neighbors=job["denoise_neighbors"], extraction=job["extraction"],
-                                   threads=job["threads"], spacing=job["spacing"], noise=job["noise"])
+    shape = shape if shape is not None else _TileShape(folder, tile, has_normals, job)
+    index, points, is_core = shape.index, shape.points, shape.is_core
+    native = shape.built()
+    result = Result(points, native.result(_option_items(job["tile_scales"], "scales"), None))
+    native.release()
     per_scale = len(result.layers) // len(job["scales"])
     names, descriptions = [], {}
     for k, tile_name in enumerate(result.layers):
@@ -666,7 +721,7 @@ def _global_noise(client, cloud, output, tiles, quiet):
             "noise_24": estimate.noise_24, "outliers": len(outliers), "working_frame": [center, exponent]}
 
 
-def _automatic_scale(client, cloud, output, manifest, save, job, quiet):
+def _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet):
     """The automatic scale of the whole cloud: the 0.99 quantile of the core
     points' closing values of all tiles pooled (exact: one run's rule)."""
     if "a" in manifest:
@@ -677,7 +732,8 @@ def _automatic_scale(client, cloud, output, manifest, save, job, quiet):
     def done(t, value):
         counts[t] = value["count"]
         stats[t] = value
-    _run_tasks(client, _tile_closing, [(t, (output, t, cloud.has_normals, job)) for t in range(tiles)],
+    _run_tasks(client, _tile_closing,
+               [(t, (output, t, cloud.has_normals, job, shapes.get(t))) for t in range(tiles)],
                "closing values", cloud.count, quiet, done)
     n = sum(counts.values())
     k = min(n - 1, int(COVERAGE * n))
@@ -738,19 +794,39 @@ def _orient(votes, sizes, cones, scales, has_normals):
     return flips
 
 
+def _shapes_fit(client, output, manifest, has_normals):
+    """Whether all tiles' shapes fit in the workers' memory at once (a share
+    of their limits; a worker without a limit makes it unknown: no)."""
+    limits = [worker.get("memory_limit") or 0 for worker in client.scheduler_info()["workers"].values()]
+    if not limits or min(limits) <= 0:
+        return False
+    record = _record_dtype(has_normals).itemsize
+    points = sum(manifest["core"]) + sum(os.path.getsize(_tile_path(output, t, "halo")) // record
+                                         for t in range(manifest["tiles"]))
+    return points * SHAPE_BYTES_PER_POINT <= HELD_SHAPES_SHARE * sum(limits)
+
+
 def _run(client, cloud, output, options, manifest, save, threads, quiet):
     _partition(cloud, output, options, manifest, save, client, quiet)
     tiles = manifest["tiles"]
     job = dict(options, spacing=manifest["spacing"], noise=manifest["noise"], denoise=manifest["denoise"],
                threads=threads)
-    if "auto" in options["scales"]:
-        a = _automatic_scale(client, cloud, output, manifest, save, job, quiet)
-        job["tile_scales"] = [repr(a) if x == "auto" else x for x in options["scales"]]
-    else:
-        job["tile_scales"] = list(options["scales"])
     parts = manifest["parts"]
     todo = [t for t in range(tiles) if not _part_is_finished(output, t, parts.get(str(t)))]
     reused = tiles - len(todo)
+    closing = "auto" in options["scales"] and "a" not in manifest
+    keep = closing and todo and _shapes_fit(client, output, manifest, cloud.has_normals)
+    # futures of the shapes on their workers, from the closing values to the curvature
+    shapes = {t: client.submit(_tile_shape, output, t, cloud.has_normals, job, retries=3, pure=False,
+                               key=f"shape-{t}-{os.urandom(4).hex()}") for t in range(tiles)} if keep else {}
+    manifest["shapes"] = "kept" if keep else ("rebuilt" if closing and todo else "built once")
+    if "auto" in options["scales"]:
+        a = _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet)
+        job["tile_scales"] = [repr(a) if x == "auto" else x for x in options["scales"]]
+    else:
+        job["tile_scales"] = list(options["scales"])
+    for t in [t for t in shapes if t not in todo]:
+        shapes.pop(t).release()
 
     def done(t, value):
         value = dict(value, flips=[False] * len(options["scales"]))
@@ -758,8 +834,11 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
         manifest.update(names=value["names"], descriptions=value["descriptions"])
         save()
     _run_tasks(client, _tile_curvatures,
-               [(t, (output, t, cloud.has_normals, job, manifest["center"], manifest["tree"])) for t in todo],
+               [(t, (output, t, cloud.has_normals, job, manifest["center"], manifest["tree"], shapes.get(t)))
+                for t in todo],
                "curvature", sum(manifest["core"][t] for t in todo), quiet, done)
+    for future in shapes.values():
+        future.release()
     names = parts["0"]["names"]
     per_scale = len(names) // len(options["scales"])
     first_names = [names[s * per_scale] for s in range(len(options["scales"]))]
@@ -814,7 +893,13 @@ def _summary(manifest, votes, flips, reused, cloud, first_names):
             "tile_points_with_halo": sum(parts[t]["points"] for t in parts),
             "reused_parts": reused, "flipped": [[t, s] for t, row in enumerate(flips) for s, f in enumerate(row) if f],
             "worker_peak_memory": {str(pid): size for pid, size in memory.items()},
-            "shape_kept_between_phases": False}
+            "shapes": manifest["shapes"]}
+
+
+_SHAPES_TEXT = {
+    "kept": "each tile's shape kept on its worker from the closing values to the curvature",
+    "rebuilt": "each tile's shape built twice (closing values, curvature): the workers' memory cannot hold all",
+    "built once": "each tile's shape built once"}
 
 
 def format_summary(summary):
@@ -826,7 +911,7 @@ def format_summary(summary):
              f"noise: {summary['noise']:.3g} x spacing (spacing {summary['spacing']:.4g}); "
              f"{'smoothed' if summary['denoised'] else 'no smoothing'}",
              "scales: " + ", ".join(f"a = {a:.4g}" for a in summary["a"]),
-             "each tile's shape is built twice (closing values, then curvature): not kept between phases",
+             _SHAPES_TEXT[summary["shapes"]],
              f"seams: {len(seams)}, worst agreement "
              + (f"{100 * summary['worst_seam_agreement']:.2f}%" if summary["worst_seam_agreement"] is not None
                 else "none"),
