@@ -264,9 +264,138 @@ Job_options read_job_options(const std::vector<std::string>& scales, const std::
   catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
 }
 
-// The program's job (conformal_curvature.cpp) without its files: the
-// analysis, then per scale its surface and per neighborhood a layer, each
-// layer's values turned into numpy arrays as soon as they are computed.
+// The program's job (conformal_curvature.cpp) without its files, split at
+// its shape: the analysis is built once (with the decisions of a larger run
+// when given), then gives its closing values or, per scale, its surface and
+// per neighborhood a layer, each layer's values turned into numpy arrays as
+// soon as they are computed. A tiled run keeps one on its worker between
+// the two (the automatic scale is reduced over all tiles in between).
+class Job
+{
+public:
+  Job(const Doubles& points_array, const std::optional<Doubles>& normals_array, const Job_options& o, int threads,
+      std::optional<double> given_spacing, std::optional<double> given_noise, const Checkpoint& checkpoint)
+    : m_options(o), m_threads(threads)
+  {
+    const std::vector<Point> points = to_triples<Point>(points_array, "points");
+    std::vector<Vector> normals;
+    if(normals_array)
+    {
+      normals = to_triples<Vector>(*normals_array, "normals");
+      if(normals.size() != points.size())
+        throw py::value_error("normals must be an (N, 3) array of one normal per point: " +
+                              std::to_string(normals.size()) + " normals for " + std::to_string(points.size()) +
+                              " points");
+    }
+    const Thread_cap cap(m_threads);
+    without_gil([&] {
+      checkpoint("conformal alpha shape", 0.0);
+      const auto np = CAS3::parameters::reference_normals(std::cref(normals),
+        CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
+      auto analyze = [&](const auto& with_noise) {
+        return o.denoising_neighbors > 0
+          ? std::make_unique<Analysis>(points.begin(), points.end(),
+                                       CAS3::parameters::denoising_neighbors(o.denoising_neighbors, with_noise))
+          : std::make_unique<Analysis>(points.begin(), points.end(), with_noise);
+      };
+      // the decisions of a larger run (the Python layer gives both or neither)
+      m_analysis = given_spacing ? analyze(CAS3::parameters::noise_estimate(
+                                     CAS3::Noise_estimate{*given_spacing, *given_noise, *given_noise}, np))
+                                 : analyze(np);
+      return 0;
+    });
+  }
+
+  // Per input point, the closing value of the front (NaN off it): a tile's
+  // share of the automatic scale of a tiled run.
+  py::array_t<double> closing_values() const
+  {
+    const Thread_cap cap(m_threads);
+    const std::vector<double> closing = without_gil([&] { return analysis().closing_values(); });
+    py::array_t<double> values = new_array<double>(closing.size());
+    std::copy(closing.begin(), closing.end(), values.mutable_data());
+    return values;
+  }
+
+  // The layers of `scales` and the run's decisions, as `multiscale_curvatures` returns them.
+  py::dict result(const std::vector<CAS3::Scale>& scales, const Checkpoint& checkpoint) const
+  {
+    const Analysis& analysis = this->analysis();
+    const Job_options& o = m_options;
+    const Thread_cap cap(m_threads);
+    const std::size_t steps = 1 + scales.size() * (1 + o.neighborhoods.size());
+    std::size_t done = 1;  // the shape
+    auto step = [&](const std::string& stage) { checkpoint(stage, double(done++) / double(steps)); };
+    py::list layers;
+    without_gil([&] {
+      for(const CAS3::Scale& scale : scales)
+      {
+        step("surface at scale " + cas3::scale_text(scale));
+        const double a = analysis.scale_value(scale);
+        Surface surface;
+        const CAS3::Surface_report report = analysis.surface(a, surface);
+        cas3::return_freed_memory();  // as the program does: the front's copy was freed mid-heap
+        step("curvature at scale " + cas3::scale_text(scale));
+        std::vector<std::vector<CAS3::Point_curvature<K> > > values =
+          analysis.estimate_curvatures(surface, o.neighborhoods, o.estimator);
+        for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
+        {
+          const std::string label = cas3::layer_label(scale, o.neighborhoods[r], scales.size() > 1);
+          {
+            py::gil_scoped_acquire gil;
+            py::dict layer = layer_arrays(values[r]);
+            layer["name"] = label;
+            layer["a"] = a;
+            layer["description"] = cas3::layer_description(analysis, a, scale, o.neighborhoods[r], label);
+            layer["surface"] = report_dict(report);
+            layers.append(layer);
+          }
+          std::vector<CAS3::Point_curvature<K> >().swap(values[r]);
+          if(r + 1 < o.neighborhoods.size())
+            step("curvature at scale " + cas3::scale_text(scale));
+        }
+      }
+      checkpoint("done", 1.0);
+      return 0;
+    });
+    const std::size_t n = analysis.number_of_input_points();
+    py::array_t<bool> outlier = new_array<bool>(n);
+    for(std::size_t i = 0; i < n; ++i)
+      outlier.mutable_data()[i] = analysis.is_outlier(i);
+    const CAS3::Noise_estimate noise = analysis.noise();
+    const CAS3::Denoising_plan denoising = analysis.denoising();
+    py::dict result;
+    result["layers"] = layers;
+    result["outlier"] = outlier;
+    result["spacing"] = noise.spacing;
+    result["noise"] = noise.noise;
+    result["denoised"] = denoising.passes > 0;
+    result["denoising_passes"] = denoising.passes;
+    result["denoising_neighbors"] = denoising.neighbors;
+    return result;
+  }
+
+  // Frees the shape, letting other threads run meanwhile (it is large).
+  void release()
+  {
+    py::gil_scoped_release release;
+    m_analysis.reset();
+  }
+
+private:
+  const Analysis& analysis() const
+  {
+    if(!m_analysis)
+      throw py::value_error("this job's shape was released");
+    return *m_analysis;
+  }
+
+  Job_options m_options;
+  int m_threads;
+  std::unique_ptr<Analysis> m_analysis;
+};
+
+// The program's job in one call.
 py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<Doubles>& normals_array,
                                const std::vector<std::string>& scales, const std::vector<std::string>& radii,
                                const std::vector<std::string>& rings, const std::string& estimator,
@@ -276,85 +405,10 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
 {
   const Job_options o =
     read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
-  const std::vector<Point> points = to_triples<Point>(points_array, "points");
-  std::vector<Vector> normals;
-  if(normals_array)
-  {
-    normals = to_triples<Vector>(*normals_array, "normals");
-    if(normals.size() != points.size())
-      throw py::value_error("normals must be an (N, 3) array of one normal per point: " +
-                            std::to_string(normals.size()) + " normals for " + std::to_string(points.size()) +
-                            " points");
-  }
   const Checkpoint checkpoint(std::move(progress));
-  const Thread_cap cap(threads);
-  const std::size_t steps = 1 + o.scales.size() * (1 + o.neighborhoods.size());
-  std::size_t done = 0;
-  auto step = [&](const std::string& stage) { checkpoint(stage, double(done++) / double(steps)); };
-
-  py::list layers;
-  std::unique_ptr<Analysis> analysis;
-  without_gil([&] {
-    step("conformal alpha shape");
-    const auto np = CAS3::parameters::reference_normals(std::cref(normals),
-      CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
-    auto analyze = [&](const auto& with_noise) {
-      return o.denoising_neighbors > 0
-        ? std::make_unique<Analysis>(points.begin(), points.end(),
-                                     CAS3::parameters::denoising_neighbors(o.denoising_neighbors, with_noise))
-        : std::make_unique<Analysis>(points.begin(), points.end(), with_noise);
-    };
-    // the decisions of a larger run (the Python layer gives both or neither)
-    analysis = given_spacing ? analyze(CAS3::parameters::noise_estimate(
-                                    CAS3::Noise_estimate{*given_spacing, *given_noise, *given_noise}, np))
-                             : analyze(np);
-    for(const CAS3::Scale& scale : o.scales)
-    {
-      step("surface at scale " + cas3::scale_text(scale));
-      const double a = analysis->scale_value(scale);
-      Surface surface;
-      const CAS3::Surface_report report = analysis->surface(a, surface);
-      cas3::return_freed_memory();  // as the program does: the front's copy was freed mid-heap
-      step("curvature at scale " + cas3::scale_text(scale));
-      std::vector<std::vector<CAS3::Point_curvature<K> > > values =
-        analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);
-      for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
-      {
-        const std::string label = cas3::layer_label(scale, o.neighborhoods[r], o.scales.size() > 1);
-        {
-          py::gil_scoped_acquire gil;
-          py::dict layer = layer_arrays(values[r]);
-          layer["name"] = label;
-          layer["a"] = a;
-          layer["description"] = cas3::layer_description(*analysis, a, scale, o.neighborhoods[r], label);
-          layer["surface"] = report_dict(report);
-          layers.append(layer);
-        }
-        std::vector<CAS3::Point_curvature<K> >().swap(values[r]);
-        if(r + 1 < o.neighborhoods.size())
-          step("curvature at scale " + cas3::scale_text(scale));
-      }
-    }
-    checkpoint("done", 1.0);
-    return 0;
-  });
-  py::array_t<bool> outlier = new_array<bool>(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    outlier.mutable_data()[i] = analysis->is_outlier(i);
-  const CAS3::Noise_estimate noise = analysis->noise();
-  const CAS3::Denoising_plan denoising = analysis->denoising();
-  {
-    py::gil_scoped_release release;  // the shape is large: other threads run while it is freed
-    analysis.reset();
-  }
-  py::dict result;
-  result["layers"] = layers;
-  result["outlier"] = outlier;
-  result["spacing"] = noise.spacing;
-  result["noise"] = noise.noise;
-  result["denoised"] = denoising.passes > 0;
-  result["denoising_passes"] = denoising.passes;
-  result["denoising_neighbors"] = denoising.neighbors;
+  Job job(points_array, normals_array, o, threads, given_spacing, given_noise, checkpoint);
+  py::dict result = job.result(o.scales, checkpoint);
+  job.release();
   return result;
 }
 
@@ -582,6 +636,23 @@ py::dict vertex_curvatures(const Doubles& vertices_array,
   return layer_arrays(values);
 }
 
+// The isolated far outliers of the points, by the rule of the pipeline's
+// input hygiene (the manual, "Input Rules"): a tiled run applies it to each
+// tile with its halo before its global noise estimate.
+py::array_t<bool> input_outliers(const Doubles& points_array)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  std::vector<bool> is_outlier;
+  without_gil([&] {
+    is_outlier = CAS3::internal::normalize_input<K>(points).is_outlier;
+    return 0;
+  });
+  py::array_t<bool> out = new_array<bool>(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    out.mutable_data()[i] = is_outlier[i];
+  return out;
+}
+
 py::dict estimate_noise(const Doubles& points_array)
 {
   const std::vector<Point> points = to_triples<Point>(points_array, "points");
@@ -620,11 +691,32 @@ PYBIND11_MODULE(_native, m)
         py::arg("scales"), py::arg("radii"), py::arg("rings"), py::arg("estimator"), py::arg("denoise"),
         py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"),
         py::arg("spacing"), py::arg("noise"));
+  // a job of the given options but its scales, which `result` takes
+  py::class_<Job>(m, "Job")
+    .def(py::init([](const Doubles& points, const std::optional<Doubles>& normals,
+                     const std::vector<std::string>& radii, const std::vector<std::string>& rings,
+                     const std::string& estimator, const std::string& denoise,
+                     const std::string& denoise_neighbors, const std::string& extraction, int threads,
+                     py::object progress, std::optional<double> spacing, std::optional<double> noise) {
+           const Job_options o =
+             read_job_options({"auto"}, radii, rings, estimator, denoise, denoise_neighbors, extraction);
+           return std::make_unique<Job>(points, normals, o, threads, spacing, noise, Checkpoint(std::move(progress)));
+         }),
+         py::arg("points"), py::arg("normals"), py::arg("radii"), py::arg("rings"), py::arg("estimator"),
+         py::arg("denoise"), py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"),
+         py::arg("progress"), py::arg("spacing"), py::arg("noise"))
+    .def("closing_values", &Job::closing_values)
+    .def("result", [](const Job& job, const std::vector<std::string>& scales, py::object progress) {
+           return job.result(read_job_options(scales, {"auto"}, {}, "quadric", "auto", "", "front").scales,
+                             Checkpoint(std::move(progress)));
+         })
+    .def("release", &Job::release);
   m.def("write_point_cloud", &write_point_cloud);
   m.def("read_point_cloud", &read_point_cloud);
   m.def("vertex_curvatures", &vertex_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("rings"),
         py::arg("radius"), py::arg("estimator"));
   m.def("estimate_noise", &estimate_noise);
+  m.def("input_outliers", &input_outliers);
   m.def("denoise", &denoise);
   py::class_<Shape_handle>(m, "Shape")
     .def(py::init<const Doubles&, const std::optional<Doubles>&>())

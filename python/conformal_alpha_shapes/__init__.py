@@ -9,6 +9,8 @@ The package of the CGAL package Conformal_alpha_shapes_3, for numpy:
   suggestion and its surfaces as (vertices, faces) arrays.
 - ``vertex_curvatures(vertices, faces)``: curvature of a triangle mesh.
 - ``estimate_noise(points)``, ``denoise(points)``, ``read_point_cloud(path)``.
+- ``front_closing_values(points)``: the front's share of the automatic scale,
+  per point, for tiled runs (``conformal_alpha_shapes.tiles``).
 
 Arrays are numpy arrays: points are (N, 3), float64 (other real dtypes and
 non-contiguous arrays are converted). Lengths and curvatures are in the
@@ -32,6 +34,7 @@ __all__ = [
     "Result",
     "denoise",
     "estimate_noise",
+    "front_closing_values",
     "multiscale_curvatures",
     "read_point_cloud",
     "vertex_curvatures",
@@ -221,6 +224,42 @@ class Result:
             raise
 
 
+def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors, extraction, threads,
+                   progress, spacing, noise):
+    """The checked arguments of the native job but its scales: (points, normals, the rest as it takes them)."""
+    if (spacing is None) != (noise is None):
+        raise ValueError("spacing and noise are given together (the decisions of a larger run) or not at all")
+    for name, value in (("spacing", spacing), ("noise", noise)):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, numbers.Real)):
+            raise TypeError(f"{name} must be a float or None, got {value!r}")
+    points = _triples(points, "points")
+    if normals is not None:
+        normals = _triples(normals, "normals")
+        if len(normals) != len(points):
+            raise ValueError(f"normals must be an (N, 3) array with N = {len(points)} (one per point), "
+                             f"got shape {normals.shape}")
+    if denoise is True or denoise is False:
+        denoise = "on" if denoise else "off"
+    if denoise_neighbors is not None and (isinstance(denoise_neighbors, bool)
+                                          or not isinstance(denoise_neighbors, numbers.Integral)):
+        raise TypeError(f"denoise_neighbors must be an int or None, got {denoise_neighbors!r}")
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress must be callable as progress(stage, fraction), got {progress!r}")
+    return (points, normals, _option_items(radii, "radii"), _option_items(rings, "rings", integers=True),
+            _choice(estimator, "estimator"), _choice(denoise, "denoise"),
+            "" if denoise_neighbors is None else str(int(denoise_neighbors)),
+            _choice(extraction, "extraction"), _threads(threads), progress,
+            None if spacing is None else float(spacing), None if noise is None else float(noise))
+
+
+def _job(points, normals=None, *, radii=("auto",), rings=(), estimator="quadric", denoise="auto",
+         denoise_neighbors=None, extraction="front", threads=None, progress=None, spacing=None, noise=None):
+    """The native job of these points and options, its shape built: ``closing_values()``,
+    ``result(scales, progress)`` (the dict ``Result`` takes) and ``release()``."""
+    return _native.Job(*_job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors,
+                                       extraction, threads, progress, spacing, noise))
+
+
 def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("auto", "2s", "4s", "8s", "16s"),
                           rings=(), estimator="quadric", denoise="auto", denoise_neighbors=None,
                           extraction="front", threads=None, progress=None, spacing=None, noise=None):
@@ -278,32 +317,35 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
         TypeError: arrays that are not of real numbers, options of the wrong type.
         KeyboardInterrupt: Ctrl-C (within a fraction of a second, the work unwound).
     """
-    if (spacing is None) != (noise is None):
-        raise ValueError("spacing and noise are given together (the decisions of a larger run) or not at all")
-    for name, value in (("spacing", spacing), ("noise", noise)):
-        if value is not None and (isinstance(value, bool) or not isinstance(value, numbers.Real)):
-            raise TypeError(f"{name} must be a float or None, got {value!r}")
-    points = _triples(points, "points")
-    if normals is not None:
-        normals = _triples(normals, "normals")
-        if len(normals) != len(points):
-            raise ValueError(f"normals must be an (N, 3) array with N = {len(points)} (one per point), "
-                             f"got shape {normals.shape}")
-    if denoise is True or denoise is False:
-        denoise = "on" if denoise else "off"
-    if denoise_neighbors is not None and (isinstance(denoise_neighbors, bool)
-                                          or not isinstance(denoise_neighbors, numbers.Integral)):
-        raise TypeError(f"denoise_neighbors must be an int or None, got {denoise_neighbors!r}")
-    if progress is not None and not callable(progress):
-        raise TypeError(f"progress must be callable as progress(stage, fraction), got {progress!r}")
-    native = _native.multiscale_curvatures(
-        points, normals, _option_items(scales, "scales"), _option_items(radii, "radii"),
-        _option_items(rings, "rings", integers=True),
-        _choice(estimator, "estimator"), _choice(denoise, "denoise"),
-        "" if denoise_neighbors is None else str(int(denoise_neighbors)),
-        _choice(extraction, "extraction"), _threads(threads), progress,
-        None if spacing is None else float(spacing), None if noise is None else float(noise))
+    arguments = _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors, extraction,
+                               threads, progress, spacing, noise)
+    points = arguments[0]
+    native = _native.multiscale_curvatures(points, arguments[1], _option_items(scales, "scales"), *arguments[2:])
     return Result(points, native)
+
+
+def front_closing_values(points, normals=None, *, denoise="auto", denoise_neighbors=None, threads=None,
+                         progress=None, spacing=None, noise=None):
+    """Per point, the closing value of the advancing front: a tile's share of the automatic scale.
+
+    The steps of ``multiscale_curvatures`` up to the front (the same checks,
+    outliers, noise decisions, smoothing and shape, with the same keywords),
+    then for each point the largest conformal value among the faces of the
+    front at its vertex: the smallest scale at which its whole umbrella is
+    in the surface. The automatic scale "auto" (with extraction "front") is
+    the 0.99 quantile of the values that are not NaN, so the scale of a
+    cloud split into tiles is that quantile over the tiles' values pooled
+    (each point counted in one tile only).
+
+    Returns:
+        (N,) float64: NaN for outliers, for points the front does not reach
+        and for all but the first of coincident points (they share a vertex).
+    """
+    job = _job(points, normals, denoise=denoise, denoise_neighbors=denoise_neighbors, threads=threads,
+               progress=progress, spacing=spacing, noise=noise)
+    closing = job.closing_values()
+    job.release()
+    return closing
 
 
 class ConformalAlphaShape:

@@ -55,6 +55,18 @@ def multiscale_curvatures(
     noise: Optional[float] = ...,
 ) -> Result: ...
 
+def front_closing_values(
+    points: _Points,
+    normals: Optional[_Points] = ...,
+    *,
+    denoise: Union[str, bool] = ...,
+    denoise_neighbors: Optional[int] = ...,
+    threads: Optional[int] = ...,
+    progress: Optional[Callable[[str, float], object]] = ...,
+    spacing: Optional[float] = ...,
+    noise: Optional[float] = ...,
+) -> npt.NDArray[np.float64]: ...
+
 class ConformalAlphaShape:
     def __init__(self, points: _Points, local_scales: Optional[npt.ArrayLike] = ...) -> None: ...
     def spectrum(self) -> npt.NDArray[np.float64]: ...

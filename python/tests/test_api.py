@@ -65,6 +65,19 @@ def test_spacing_and_noise_of_a_larger_run():
     assert not cas.multiscale_curvatures(points, radii=("4s",), spacing=own.spacing, noise=0.0).denoised
 
 
+def test_front_closing_values_give_the_automatic_scale():
+    """Their 0.99 quantile is the automatic scale (tiled runs pool them over tiles)."""
+    points, _ = fibonacci_sphere(3000)
+    points = np.vstack([points, points[:5]])  # coincident points count once
+    closing = cas.front_closing_values(points)
+    assert closing.shape == (3005,) and np.isnan(closing[3000:]).all()
+    values = np.sort(closing[~np.isnan(closing)])
+    k = min(len(values) - 1, int(0.99 * len(values)))
+    assert values[k] == cas.multiscale_curvatures(points, radii=("4s",))["r4s"].a
+    # the shape of the points as given (not recentered): the same to rounding
+    assert values[k] == pytest.approx(cas.ConformalAlphaShape(points[:3000]).suggest_scale(), rel=1e-12)
+
+
 def test_given_inward_normals_are_followed():
     points, normals, H = ellipsoid(5000, (1.5, 1.0, 0.75))
     r = cas.multiscale_curvatures(points, -normals, radii=("4s",))

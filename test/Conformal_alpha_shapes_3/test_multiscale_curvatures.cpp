@@ -408,6 +408,33 @@ BOOST_AUTO_TEST_CASE(noise_estimate_of_a_larger_run)
   }
 }
 
+// The closing values (Surface_front::closing_values() by input point) are
+// what the automatic scale is the 0.99 quantile of: a tiled run pools them
+// over its tiles. Coincident points count once, on the first of them.
+BOOST_AUTO_TEST_CASE(closing_values_give_the_automatic_scale)
+{
+  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 0.7, 0.4);
+  std::vector<Point> points = s.points;
+  points.push_back(points[5]);
+  points.push_back(points[7]);
+  const CAS3::Multiscale_curvatures<K> m(points.begin(), points.end());
+  const std::vector<double> closing = m.closing_values();
+  BOOST_REQUIRE(closing.size() == points.size());
+  BOOST_TEST(std::isnan(closing[3000]));
+  BOOST_TEST(std::isnan(closing[3001]));
+  BOOST_TEST(!std::isnan(closing[5]));
+  std::vector<double> values;
+  for(double c : closing)
+    if(!std::isnan(c))
+      values.push_back(c);
+  BOOST_TEST(values.size() > 2900u);
+  const std::size_t k = (std::min)(values.size() - 1, std::size_t(0.99 * double(values.size())));
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+  BOOST_TEST(values[k] == m.scale_value(CAS3::Scale::automatic()));
+  const std::vector<double> by_vertex = CAS3::Surface_front<CAS3::Multiscale_curvatures<K>::Shape>(m.shape()).closing_values();
+  BOOST_TEST(by_vertex.size() == m.shape().number_of_vertices());
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_multiscale_curvatures

@@ -195,6 +195,27 @@ public:
     return m_suggested;
   }
 
+  /// Per input point, the closing value of its vertex in the advancing
+  /// front grown once (`Surface_front::closing_values()`), held by the
+  /// first of the input points a vertex stands for (coincident points share
+  /// a vertex); NaN for the others, for outliers and for points the front
+  /// does not reach. The automatic scale with `ADVANCING_FRONT` is the 0.99
+  /// quantile of the values that are not NaN.
+  std::vector<double> closing_values() const
+  {
+    const std::vector<double> by_vertex = front().closing_values();
+    std::vector<double> closing(number_of_input_points(), std::numeric_limits<double>::quiet_NaN());
+    std::vector<bool> taken(by_vertex.size(), false);
+    for(std::size_t k = 0; k < m_input.input_index.size(); ++k)
+    {
+      const std::size_t v = m_shape.input_vertex(k)->vertex_index();
+      if(!taken[v])
+        closing[m_input.input_index[k]] = by_vertex[v];
+      taken[v] = true;
+    }
+    return closing;
+  }
+
   /// Replaces `surface` with the surface at scale `a` (`extract_surface()`),
   /// in input units and indices. With the advancing front, every scale is
   /// cut from one `Surface_front`, grown at the first call of this or of

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
@@ -78,15 +79,36 @@ public:
   {
     if(!(coverage > 0 && coverage <= 1))
       throw std::invalid_argument("suggest_scale: coverage must be in (0, 1]");
-    std::vector<double> closing(m_soup.shape_vertex.size(), 0.0);
-    for(std::size_t t = 0; t < m_soup.triangles.size(); ++t)
-      for(std::size_t s : m_soup.triangles[t])
-        closing[s] = (std::max)(closing[s], m_soup.values[t]);
+    std::vector<double> closing;
+    closing.reserve(m_soup.shape_vertex.size());
+    for(double value : closing_values())
+      if(!std::isnan(value))
+        closing.push_back(value);
     if(closing.empty())
       return std::numeric_limits<double>::infinity();
     const std::size_t k = (std::min)(closing.size() - 1, std::size_t(coverage * double(closing.size())));
     std::nth_element(closing.begin(), closing.begin() + std::ptrdiff_t(k), closing.end());
     return closing[k];
+  }
+
+  /*!
+  The closing value of every vertex of the shape, by `vertex_index()`: the
+  largest conformal value among its faces of the front, the smallest scale
+  at which its whole umbrella is in the surface; NaN for the vertices the
+  front does not reach. `suggest_scale(coverage)` is the `coverage`
+  quantile of the values that are not NaN, so the automatic scale of a
+  sample split into pieces (tiles with a halo, the manual's "Tiled
+  Processing on Dask") is that quantile over the pieces' values pooled.
+  */
+  std::vector<double> closing_values() const
+  {
+    std::vector<double> closing(m_shape.number_of_vertices(), std::numeric_limits<double>::quiet_NaN());
+    for(std::size_t s : m_soup.shape_vertex)
+      closing[s] = 0.0;
+    for(std::size_t t = 0; t < m_soup.triangles.size(); ++t)
+      for(std::size_t s : m_soup.triangles[t])
+        closing[m_soup.shape_vertex[s]] = (std::max)(closing[m_soup.shape_vertex[s]], m_soup.values[t]);
+    return closing;
   }
 
   /*!

@@ -1,0 +1,128 @@
+#!/usr/bin/python3
+"""A tiled run on Dask against one run, on the same noisy scene: the answer
+(spacing, noise, the automatic scale, outliers, normal signs and the median
+relative difference of H per layer, every index once), wall and processor
+time, and peak memory (one run's process; each worker's).
+
+    PYTHONPATH=build/python /usr/bin/python3 benchmark/Conformal_alpha_shapes_3/benchmark_tiles.py \
+        --points 1000000 --tile-points 250000 --workers 2
+
+The scene is the tests' (python/tests/test_tiles.py): a closed ellipsoid
+above an open wavy sheet, Gaussian noise of 0.1 spacings, 5 far outliers.
+One run is ``multiscale_curvatures`` in a process of its own with TBB on
+every core (the program's values to the last bit); the tiled run is
+``python3 -m conformal_alpha_shapes.tiles`` with an embedded LocalCluster.
+With --no-one-run only the tiled run (clouds one process cannot hold);
+with --input FILE a scan instead of the scene (with its normals, if any).
+"""
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python", "tests"))
+from test_tiles import scene  # noqa: E402
+
+ONE_RUN = r"""
+import json, resource, sys, time
+import numpy as np
+import conformal_alpha_shapes as cas
+cloud = np.load(sys.argv[1])
+points, normals = cloud[:, :3], (cloud[:, 3:] if cloud.shape[1] == 6 else None)
+start, cpu = time.perf_counter(), time.process_time()
+r = cas.multiscale_curvatures(points, normals)
+wall, cpu = time.perf_counter() - start, time.process_time() - cpu
+np.savez(sys.argv[2], outlier=r.outlier, **{f"n_{k}": r[k].normal.astype(np.float32) for k in r.layers},
+         **{f"H_{k}": r[k].H for k in r.layers})
+print(json.dumps({"wall": wall, "cpu": cpu, "a": r[r.layers[0]].a, "spacing": r.spacing, "noise": r.noise,
+                  "layers": list(r.layers),
+                  "peak": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024}))
+"""
+
+
+def compare(folder, one, reference):
+    """The tiled run's merged file against one run's arrays."""
+    from conformal_alpha_shapes import tile_io
+    manifest = tile_io.read_manifest(os.path.join(folder, "manifest.json"))
+    names = manifest["names"]
+    path = os.path.join(folder, "curvatures.ply")
+    with open(path, "rb") as f:
+        head = f.read(1 << 16)
+    merged = np.memmap(path, dtype=tile_io.part_dtype(names, False), mode="r",
+                       offset=head.index(b"end_header\n") + len(b"end_header\n"))
+    indices = np.concatenate([tile_io.read_part(os.path.join(folder, "parts", f"part_{t:05d}.ply"),
+                                                names)["input_index"] for t in range(manifest["tiles"])])
+    out = {"every_index_once": bool(np.array_equal(np.sort(indices.astype(np.int64)), np.arange(len(merged)))),
+           "outliers_equal": bool(np.array_equal(merged["outlier"].astype(bool), reference["outlier"])),
+           "spacing_relative": manifest["spacing"] / one["spacing"] - 1,
+           "noise_relative": manifest["noise"] / one["noise"] - 1,
+           "a_relative": manifest["a"] / one["a"] - 1, "layers": {}}
+    for name in names:
+        normal = np.column_stack([merged[f"n{axis}_{name}"] for axis in "xyz"]).astype(np.float64)
+        dot = np.einsum("ij,ij->i", normal, reference[f"n_{name}"].astype(np.float64))
+        valid = np.isfinite(dot)
+        H, H_one = merged[f"H_{name}"].astype(np.float64), reference[f"H_{name}"]
+        both = np.isfinite(H) & np.isfinite(H_one)
+        out["layers"][name] = {
+            "same_normal_sign": float(np.mean(dot[valid] > 0)),
+            "median_relative_H_difference": float(np.median(np.abs(H[both] - H_one[both]))
+                                                  / np.median(np.abs(H_one[both])))}
+    return out
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--points", type=int, default=1_000_000)
+    parser.add_argument("--tile-points", type=int, default=250_000)
+    parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--input", default=None,
+                        help="a cloud the program reads (.xyz, .ply, ...) instead of the scene, with its normals")
+    parser.add_argument("--folder", default=None, help="where the cloud and the outputs go (default: a temporary one)")
+    parser.add_argument("--no-one-run", action="store_true")
+    args = parser.parse_args()
+    folder = args.folder or tempfile.mkdtemp(prefix="benchmark_tiles_")
+    cloud = os.path.join(folder, "scene.npy")
+    if args.input:
+        from conformal_alpha_shapes import read_point_cloud
+        points, normals = read_point_cloud(args.input)
+        np.save(cloud, points if normals is None else np.hstack([points, normals]))
+    elif not os.path.exists(cloud):
+        np.save(cloud, scene(args.points)[0])
+    result = {"points": int(np.load(cloud, mmap_mode="r").shape[0]), "tile_points": args.tile_points,
+              "workers": args.workers}
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", cloud, "--output",
+                    os.path.join(folder, "tiled"), "--tile-points", str(args.tile_points), "--workers",
+                    str(args.workers), "--merge"], check=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with open(os.path.join(folder, "tiled", "summary.json")) as f:
+        summary = json.load(f)
+    result["tiled"] = {"wall": time.perf_counter() - start,
+                       "cpu": (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime),
+                       "worker_peak_memory": summary["worker_peak_memory"], "tiles": summary["tiles"],
+                       "points_with_halos": summary["tile_points_with_halo"],
+                       "worst_tile": summary["worst_tile"], "worst_seam_agreement": summary["worst_seam_agreement"],
+                       "storage": sum(os.path.getsize(os.path.join(root, name))
+                                      for root, _, names in os.walk(os.path.join(folder, "tiled"))
+                                      for name in names)}
+    if not args.no_one_run:
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        run = subprocess.run([sys.executable, "-c", ONE_RUN, cloud, os.path.join(folder, "one.npz")],
+                             check=True, capture_output=True, text=True)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        one = json.loads(run.stdout)
+        one["process_cpu"] = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
+        result["one_run"] = one
+        result["answer"] = compare(os.path.join(folder, "tiled"), one, np.load(os.path.join(folder, "one.npz")))
+    print(json.dumps(result, indent=1))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,339 @@
+"""Files of tiled runs (``conformal_alpha_shapes.tiles``): chunked readers of
+large clouds, the tiles' point files, the parts (binary PLY), the manifest,
+and the merge into one ``curvatures.ply``.
+
+Readers never hold the whole cloud: binary PLY and ``.npy`` are memory-mapped
+and read in slices, ``.xyz`` is parsed a chunk of lines at a time. Every file
+is written beside its final name and renamed into place (``os.replace``), so
+a file under its final name is always complete.
+"""
+
+import hashlib
+import json
+import math
+import os
+import tempfile
+
+import numpy as np
+
+__all__ = [
+    "InputError",
+    "Cloud",
+    "open_cloud",
+    "atomic_write",
+    "save_array",
+    "part_dtype",
+    "write_part",
+    "read_part",
+    "ply_header",
+    "merge_parts",
+    "file_digest",
+    "read_manifest",
+    "write_manifest",
+]
+
+
+class InputError(ValueError):
+    """Bad input, with the program's wording ("FILE:LINE: what")."""
+
+
+_PLY_TYPES = {
+    "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
+    "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
+    "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
+}
+
+
+class Cloud:
+    """A point cloud read in chunks: ``count`` points, ``has_normals``, and
+    ``chunks(size)`` yielding ``(start, points, normals)`` with (n, 3) float64
+    arrays (normals None without them)."""
+
+    def __init__(self, path, count, has_normals, reader):
+        self.path = path
+        self.count = count
+        self.has_normals = has_normals
+        self._reader = reader
+
+    def chunks(self, size):
+        """The cloud in order, ``size`` points at a time."""
+        return self._reader(size)
+
+
+def _structured_reader(records, names):
+    """Chunks of the fields x y z (and nx ny nz) of a structured array (a memory map)."""
+    normal_names = ("nx", "ny", "nz")
+    has_normals = all(name in names for name in normal_names)
+
+    def chunks(size):
+        for start in range(0, len(records), size):
+            block = records[start:start + size]
+            points = np.column_stack([block[c].astype(np.float64) for c in "xyz"])
+            normals = (np.column_stack([block[c].astype(np.float64) for c in normal_names])
+                       if has_normals else None)
+            yield start, points, normals
+    return has_normals, chunks
+
+
+def _open_ply(path):
+    with open(path, "rb") as f:
+        if f.readline().strip() != b"ply":
+            raise InputError(f"{path}:1: not a PLY file")
+        fmt, elements, line_number = None, [], 1
+        while True:
+            line = f.readline()
+            line_number += 1
+            if not line:
+                raise InputError(f"{path}: the PLY header has no end_header")
+            words = line.decode("ascii", "replace").split()
+            if not words or words[0] in ("comment", "obj_info"):
+                continue
+            if words[0] == "end_header":
+                break
+            if words[0] == "format":
+                fmt = words[1]
+            elif words[0] == "element":
+                elements.append([words[1], int(words[2]), []])
+            elif words[0] == "property":
+                if not elements:
+                    raise InputError(f"{path}:{line_number}: a property before any element")
+                if words[1] == "list":
+                    if elements[-1][0] == "vertex":
+                        raise InputError(f"{path}:{line_number}: a list property of vertices is not read in tiles")
+                    elements[-1][2].append(None)
+                    continue
+                if words[1] not in _PLY_TYPES:
+                    raise InputError(f"{path}:{line_number}: unknown PLY type '{words[1]}'")
+                elements[-1][2].append((words[2], _PLY_TYPES[words[1]]))
+        offset = f.tell()
+    if fmt not in ("binary_little_endian", "binary_big_endian"):
+        raise InputError(f"{path}: tiled runs read binary PLY (format {fmt}); "
+                         "convert it, or give .npy or .xyz")
+    order = "<" if fmt == "binary_little_endian" else ">"
+    for name, count, properties in elements:
+        if name == "vertex":
+            names = [p[0] for p in properties]
+            if not all(c in names for c in "xyz"):
+                raise InputError(f"{path}: the vertices have no x, y and z")
+            dtype = np.dtype([(p[0], order + p[1]) for p in properties])
+            records = np.memmap(path, dtype=dtype, mode="r", offset=offset, shape=(count,)) if count else \
+                np.empty(0, dtype)
+            has_normals, reader = _structured_reader(records, names)
+            return Cloud(path, count, has_normals, reader)
+        if any(p is None for p in properties):
+            raise InputError(f"{path}: element {name} before the vertices has list properties")
+        offset += count * np.dtype([(p[0], order + p[1]) for p in properties]).itemsize
+    raise InputError(f"{path}: no vertex element")
+
+
+def _open_npy(path):
+    array = np.load(path, mmap_mode="r")
+    if array.ndim != 2 or array.shape[1] not in (3, 6) or array.dtype.kind not in "fiu":
+        raise InputError(f"{path}: expected an (N, 3) or (N, 6) array of numbers, got {array.shape} {array.dtype}")
+
+    def chunks(size):
+        for start in range(0, len(array), size):
+            block = np.asarray(array[start:start + size], dtype=np.float64)
+            yield start, np.ascontiguousarray(block[:, :3]), \
+                (np.ascontiguousarray(block[:, 3:]) if array.shape[1] == 6 else None)
+    return Cloud(path, len(array), array.shape[1] == 6, chunks)
+
+
+def _xyz_rows(path, lines, first_line, columns):
+    """The numbers of ``lines`` (text, ``columns`` per line); the program's message on a bad line."""
+    try:
+        rows = np.loadtxt(lines, dtype=np.float64, ndmin=2, comments="#")
+        if rows.shape[1] == columns:
+            return rows
+    except ValueError:
+        pass
+    rows = []
+    for k, line in enumerate(lines):
+        fields = line.split("#")[0].split()
+        if not fields:
+            continue
+        if len(fields) != columns:
+            raise InputError(f"{path}:{first_line + k}: expected {columns} numbers as on line 1, "
+                             f"found {len(fields)} fields")
+        values = []
+        for field in fields:
+            try:
+                values.append(float(field))
+            except ValueError:
+                raise InputError(f"{path}:{first_line + k}: not a number: '{field}'") from None
+        rows.append(values)
+    return np.array(rows, dtype=np.float64).reshape(-1, columns)
+
+
+def _open_xyz(path):
+    with open(path) as f:
+        first = ""
+        for first in f:
+            if first.split("#")[0].split():
+                break
+    columns = len(first.split("#")[0].split())
+    if columns not in (3, 6):
+        raise InputError(f"{path}:1: expected 3 or 6 numbers per line (x y z [nx ny nz]), found {columns} fields")
+
+    def chunks(size):
+        start = 0
+        with open(path) as f:
+            line_number = 1
+            while True:
+                lines = [line for _, line in zip(range(size), f)]
+                if not lines:
+                    return
+                rows = _xyz_rows(path, lines, line_number, columns)
+                bad = np.flatnonzero(~np.isfinite(rows).all(axis=1))
+                if len(bad):
+                    k = int(bad[0])
+                    field = next(x for x in lines[k].split() if not math.isfinite(float(x)))
+                    raise InputError(f"{path}:{line_number + k}: coordinate is NaN or infinite: '{field}'")
+                line_number += len(lines)
+                if len(rows):
+                    yield start, np.ascontiguousarray(rows[:, :3]), \
+                        (np.ascontiguousarray(rows[:, 3:]) if columns == 6 else None)
+                start += len(rows)
+
+    count = sum(len(p) for _, p, _ in chunks(1 << 20))
+    return Cloud(path, count, columns == 6, chunks)
+
+
+def open_cloud(path):
+    """The cloud at ``path`` (binary PLY, ``.npy``, ``.xyz``), checked to the end.
+
+    Raises ``InputError`` with the program's wording: a missing file, a bad
+    line of a ``.xyz`` (file and line), a NaN or infinite coordinate.
+    """
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise InputError(f"{path}: no such file")
+    extension = os.path.splitext(path)[1].lower()
+    openers = {".ply": _open_ply, ".npy": _open_npy, ".xyz": _open_xyz}
+    if extension not in openers:
+        raise InputError(f"{path}: tiled runs read .ply (binary), .npy and .xyz, not '{extension}'")
+    cloud = openers[extension](path)
+    for start, points, _ in cloud.chunks(1 << 20):
+        bad = np.flatnonzero(~np.isfinite(points).all(axis=1))
+        if len(bad):
+            raise InputError(f"{path}: point {start + int(bad[0])}: coordinate is NaN or infinite")
+    if cloud.count < 4:
+        raise InputError(f"{path}: {cloud.count} points; at least 4 that span 3D are needed")
+    return cloud
+
+
+def atomic_write(path, write):
+    """Calls ``write(temporary_path)`` and renames the file to ``path``: never half written."""
+    folder = os.path.dirname(os.path.abspath(path))
+    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".part", dir=folder)
+    os.close(handle)
+    try:
+        write(temporary)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
+_LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",
+                 "radius", "distance")
+
+
+def save_array(path, values):
+    """Writes a numpy array as ``.npy``, atomically."""
+    def write(temporary):
+        with open(temporary, "wb") as f:
+            np.save(f, values)
+    atomic_write(path, write)
+
+
+def part_dtype(layers, with_index=True):
+    """The record of ``curvatures.ply`` for layer names ``layers`` (plus ``input_index``)."""
+    fields = [("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("outlier", "u1")]
+    for name in layers:
+        fields += [(f"{field}_{name}", "<f4") for field in _LAYER_FIELDS] + [(f"source_{name}", "u1")]
+    if with_index:
+        fields.append(("input_index", "<f8"))
+    return np.dtype(fields)
+
+
+def ply_header(layers, descriptions, count, with_index=True):
+    """The header of the program's ``curvatures.ply`` (and of a part, with ``input_index``)."""
+    types = {"<f8": "double", "<f4": "float", "u1": "uchar", "|u1": "uchar"}
+    lines = ["ply", "format binary_little_endian 1.0",
+             "comment conformal_curvature: values per input point, in input units",
+             "comment source_L: 0 own surface vertex, 1 nearest surface point, 2 no value"]
+    lines += [f"comment layer {name}: {descriptions[name]}" for name in layers]
+    lines.append(f"element vertex {count}")
+    dtype = part_dtype(layers, with_index)
+    lines += [f"property {types[dtype.fields[name][0].str]} {name}" for name in dtype.names]
+    lines.append("end_header")
+    return ("\n".join(lines) + "\n").encode("ascii")
+
+
+def write_part(path, records, layers, descriptions):
+    """Writes ``records`` (of ``part_dtype(layers)``) as a binary PLY part, atomically."""
+    def write(temporary):
+        with open(temporary, "wb") as f:
+            f.write(ply_header(layers, descriptions, len(records)))
+            records.tofile(f)
+    atomic_write(path, write)
+
+
+def read_part(path, layers):
+    """A part's records (a memory map of ``part_dtype(layers)``)."""
+    with open(path, "rb") as f:
+        head = f.read(1 << 16)
+    offset = head.index(b"end_header\n") + len(b"end_header\n")
+    return np.memmap(path, dtype=part_dtype(layers), mode="r", offset=offset)
+
+
+def merge_parts(path, part_paths, layers, descriptions, count):
+    """One ``curvatures.ply`` of ``count`` points in input order from the parts
+    (the program's fields; each part's records go to their input indices)."""
+    dtype = part_dtype(layers, with_index=False)
+    header = ply_header(layers, descriptions, count, with_index=False)
+
+    def write(temporary):
+        with open(temporary, "wb") as f:
+            f.write(header)
+            f.truncate(len(header) + count * dtype.itemsize)
+        out = np.memmap(temporary, dtype=dtype, mode="r+", offset=len(header), shape=(count,))
+        for part_path in part_paths:
+            part = read_part(part_path, layers)
+            for start in range(0, len(part), 1 << 20):
+                block = part[start:start + (1 << 20)]
+                values = np.empty(len(block), dtype)
+                for name in dtype.names:
+                    values[name] = block[name]
+                out[block["input_index"].astype(np.int64)] = values
+        out.flush()
+        del out
+    atomic_write(path, write)
+
+
+def file_digest(path):
+    """The SHA-256 of a file's bytes (hex)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 22), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def read_manifest(path):
+    """The manifest at ``path`` (a dict), or None when there is none or it is unreadable."""
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def write_manifest(path, manifest):
+    """Writes the manifest (or any dict) as JSON, atomically."""
+    def write(temporary):
+        with open(temporary, "w") as f:
+            json.dump(manifest, f, indent=1, sort_keys=True)
+    atomic_write(path, write)

@@ -1,0 +1,348 @@
+"""Tiled processing on Dask (conformal_alpha_shapes.tiles): a tiled run gives
+the answer of one run; the scheduler-and-workers path; seams; faults; bad
+input; atomic writes. Small clouds, so that the file runs in about 100 s on
+two cores; a service that cannot start fails the test."""
+import os
+import signal
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import conformal_alpha_shapes as cas
+from conformal_alpha_shapes import tile_io, tiles
+
+from conftest import fibonacci_sphere
+
+
+def scene(n, seed=1, noise=0.1):
+    """A noisy scene: a closed ellipsoid above an open wavy sheet (both across
+    several tiles), and 5 isolated far outliers; the points and, per point,
+    0 ellipsoid, 1 sheet, 2 outlier."""
+    rng = np.random.default_rng(seed)
+    closed = n // 3
+    unit, _ = fibonacci_sphere(closed)
+    ellipsoid = unit * np.array([1.0, 0.7, 0.5]) + np.array([0, 0, 1.2])
+    side = int(np.sqrt(n - closed))
+    spacing = 4 / side
+    grid = np.stack(np.meshgrid(np.linspace(-2, 2, side), np.linspace(-2, 2, side)), -1).reshape(-1, 2)
+    grid = grid + rng.uniform(-0.3, 0.3, grid.shape) * spacing
+    sheet = np.column_stack([grid, 0.15 * np.sin(1.5 * grid[:, 0]) * np.cos(grid[:, 1])])
+    points = np.vstack([ellipsoid, sheet])
+    points = points + rng.normal(0, noise * spacing, points.shape)
+    far = np.array([[0, 0, 4], [1.5, -1, 4.5], [-1.5, 1, 5], [3, 3, 3], [-3, -3, -2.0]])
+    label = np.concatenate([np.zeros(len(ellipsoid)), np.ones(len(sheet)), np.full(len(far), 2)])
+    order = rng.permutation(len(points) + len(far))
+    return np.vstack([points, far])[order], label[order].astype(int)
+
+
+def read_merged(folder, names):
+    with open(os.path.join(folder, "curvatures.ply"), "rb") as f:
+        head = f.read(1 << 16)
+    offset = head.index(b"end_header\n") + len(b"end_header\n")
+    return np.memmap(os.path.join(folder, "curvatures.ply"), dtype=tile_io.part_dtype(names, False), mode="r",
+                     offset=offset)
+
+
+def normals_of(records, name):
+    return np.column_stack([records[f"n{axis}_{name}"] for axis in "xyz"]).astype(np.float64)
+
+
+@pytest.fixture(scope="module")
+def client():
+    """A LocalCluster of 2 worker processes, one thread each, on 127.0.0.1."""
+    from distributed import Client, LocalCluster
+    try:
+        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                               dashboard_address=None)
+    except Exception as e:  # a test whose service cannot start fails
+        pytest.fail(f"a Dask LocalCluster of 2 processes did not start: {e!r}")
+    c = Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def scene_run(client, tmp_path_factory):
+    """An 80k-point scene in 8 tiles, merged, and one run of the module on it."""
+    folder = tmp_path_factory.mktemp("scene")
+    points, label = scene(80_000)
+    np.save(folder / "scene.npy", points)
+    summary = tiles.process_tiles(folder / "scene.npy", folder / "out", tile_points=10_000, client=client,
+                                  merge=True, quiet=True)
+    one = cas.multiscale_curvatures(points)
+    return points, label, summary, one, folder
+
+
+def test_tiled_run_equals_one_run(scene_run):
+    points, _, summary, one, folder = scene_run
+    assert summary["tiles"] == 8
+    # the decisions of one run: spacing and noise exactly (relative 1e-12)
+    assert summary["spacing"] == pytest.approx(one.spacing, rel=1e-12)
+    assert summary["noise"] == pytest.approx(one.noise, rel=1e-12)
+    assert summary["denoised"] == one.denoised
+    # the automatic scale: pooled closing values; the front's greedy choices
+    # differ at a few points of a tile, which moves the quantile slightly
+    assert summary["a"][0] == pytest.approx(one["rauto"].a, rel=0.01)
+    merged = read_merged(folder / "out", summary["layers"])
+    assert len(merged) == len(points)
+    assert np.array_equal(merged["x"], points[:, 0]) and np.array_equal(merged["z"], points[:, 2])
+    assert np.array_equal(merged["outlier"].astype(bool), one.outlier)
+    indices = np.concatenate([tile_io.read_part(os.path.join(folder, "out", "parts", f"part_{t:05d}.ply"),
+                                                summary["layers"])["input_index"] for t in range(8)])
+    assert np.array_equal(np.sort(indices.astype(np.int64)), np.arange(len(points)))  # every index once
+    for name in one.layers:
+        mine, theirs = normals_of(merged, name), one[name].normal
+        dot = np.einsum("ij,ij->i", mine, theirs)
+        valid = np.isfinite(dot)
+        assert np.mean(dot[valid] > 0) >= 0.995, name
+        H, reference = merged[f"H_{name}"].astype(np.float64), one[name].H
+        both = np.isfinite(H) & np.isfinite(reference)
+        assert both.sum() >= 0.99 * (~one.outlier).sum(), name
+        relative = np.median(np.abs(H[both] - reference[both])) / np.median(np.abs(reference[both]))
+        assert relative <= 0.01, (name, relative)
+
+
+def test_the_merged_file_is_the_programs_format(scene_run):
+    _, _, summary, one, folder = scene_run
+    with open(folder / "out" / "curvatures.ply", "rb") as f:
+        head = f.read(4096)
+    reference = folder / "one.ply"
+    one.write_ply(reference)
+    with open(reference, "rb") as f:
+        theirs = f.read(4096)
+    end = b"end_header\n"
+    mine_header, their_header = head[:head.index(end)], theirs[:theirs.index(end)]
+    # the same fields; the descriptions differ only by the scale's value
+    strip = lambda header: [line for line in header.split(b"\n") if not line.startswith(b"comment layer")]
+    assert strip(mine_header) == strip(their_header)
+
+
+def test_seams_agree_and_closed_parts_point_outward(scene_run):
+    points, label, summary, _, folder = scene_run
+    assert summary["worst_seam_agreement"] >= 0.99
+    merged = read_merged(folder / "out", summary["layers"])
+    normal = normals_of(merged, "rauto")
+    on = np.isfinite(normal[:, 0])
+    # the closed ellipsoid spans tiles: outward
+    closed = on & (label == 0)
+    outward = np.einsum("ij,ij->i", normal[closed], points[closed] - np.array([0, 0, 1.2]))
+    assert np.mean(outward > 0) >= 0.99
+    # the open sheet: one side, up to one global flip
+    sheet = on & (label == 1)
+    up = np.mean(normal[sheet, 2] > 0)
+    assert max(up, 1 - up) >= 0.99
+
+
+def test_an_open_sheet_across_many_tiles(client, tmp_path):
+    rng = np.random.default_rng(3)
+    side = 180
+    grid = np.stack(np.meshgrid(np.linspace(0, 4, side), np.linspace(0, 4, side)), -1).reshape(-1, 2)
+    grid = grid + rng.uniform(-0.3, 0.3, grid.shape) * 4 / side
+    points = np.column_stack([grid, 0.3 * np.sin(grid[:, 0]) * np.sin(0.7 * grid[:, 1])])
+    np.save(tmp_path / "sheet.npy", points)
+    summary = tiles.process_tiles(tmp_path / "sheet.npy", tmp_path / "out", tile_points=2_100, client=client,
+                                  merge=True, quiet=True, radii=("4s",))
+    assert summary["tiles"] == 16
+    merged = read_merged(tmp_path / "out", summary["layers"])
+    normal = normals_of(merged, "r4s")
+    on = np.isfinite(normal[:, 0])
+    up = np.mean(normal[on, 2] > 0)
+    assert max(up, 1 - up) >= 0.99
+    assert summary["worst_seam_agreement"] >= 0.99
+    # input normals decide, as in one run: all down here
+    down = np.tile([0.0, 0.0, -1.0], (len(points), 1))
+    np.save(tmp_path / "sheet_normals.npy", np.hstack([points, down]))
+    summary = tiles.process_tiles(tmp_path / "sheet_normals.npy", tmp_path / "with_normals", tile_points=2_100,
+                                  client=client, merge=True, quiet=True, radii=("4s",))
+    assert summary["flipped"] == []
+    normal = normals_of(read_merged(tmp_path / "with_normals", summary["layers"]), "r4s")
+    assert np.mean(normal[np.isfinite(normal[:, 0]), 2] < 0) >= 0.99
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_scheduler_and_workers_on_localhost(tmp_path):
+    """Debian's dask-scheduler and dask-worker as separate processes, and the command line."""
+    port = free_port()
+    environment = dict(os.environ)
+    services = []
+    try:
+        services.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host",
+                                          "127.0.0.1", "--port", str(port), "--dashboard-address", ":0"],
+                                         env=environment, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE))
+        address = f"tcp://127.0.0.1:{port}"
+        for _ in range(2):
+            services.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address,
+                                              "--nthreads", "1", "--host", "127.0.0.1", "--no-dashboard"],
+                                             env=environment, stdout=subprocess.DEVNULL,
+                                             stderr=subprocess.DEVNULL))
+        from distributed import Client
+        deadline = time.monotonic() + 60
+        while True:
+            try:
+                with Client(address, timeout=5) as c:
+                    c.wait_for_workers(2, timeout=30)
+                break
+            except Exception as e:
+                if time.monotonic() > deadline or services[0].poll() is not None:
+                    pytest.fail(f"dask-scheduler and 2 dask-workers on {address} did not start: {e!r}")
+                time.sleep(0.5)
+        points, _ = scene(12_000, seed=5)
+        np.save(tmp_path / "small.npy", points)
+        run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / "small.npy"),
+                              "--output", str(tmp_path / "out"), "--tile-points", "6000", "--scheduler", address,
+                              "--merge", "--radius", "auto,4s"], env=environment, capture_output=True, text=True,
+                             timeout=300)
+        assert run.returncode == 0, run.stderr
+        assert "tiles" in run.stderr and "worst tile" in run.stderr
+        summary = tile_io.read_manifest(tmp_path / "out" / "manifest.json")
+        merged = read_merged(tmp_path / "out", summary["names"])
+        assert len(merged) == len(points)
+    finally:
+        for service in reversed(services):
+            service.terminate()
+        for service in services:
+            try:
+                service.wait(timeout=20)
+            except subprocess.TimeoutExpired:
+                service.kill()
+
+
+@pytest.fixture(scope="module")
+def fault_input(client, tmp_path_factory):
+    """A cloud in 4 tiles and its undisturbed tiled run (merged)."""
+    folder = tmp_path_factory.mktemp("faults")
+    points, _ = scene(24_000, seed=7)
+    np.save(folder / "cloud.npy", points)
+    tiles.process_tiles(folder / "cloud.npy", folder / "undisturbed", tile_points=6_000, client=client,
+                        merge=True, quiet=True, radii=("auto", "4s"))
+    with open(folder / "undisturbed" / "curvatures.ply", "rb") as f:
+        return folder, f.read()
+
+
+def test_a_killed_worker_is_replaced_and_the_output_is_the_same(fault_input, tmp_path):
+    from distributed import Client, LocalCluster
+    folder, expected = fault_input
+    cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                           dashboard_address=None)
+    killed = []
+    try:
+        with Client(cluster) as c:
+            pids = list(c.run(os.getpid).values())
+
+            def kill_mid_run():
+                """Kills a worker once the first tile's closing values are written (tiles in flight)."""
+                folder_of_tiles = tmp_path / "out" / "tiles"
+                deadline = time.monotonic() + 120
+                while time.monotonic() < deadline and not killed:
+                    if folder_of_tiles.exists() and any(name.startswith("closing_")
+                                                        for name in os.listdir(folder_of_tiles)):
+                        os.kill(pids[0], signal.SIGKILL)
+                        killed.append(pids[0])
+                    time.sleep(0.02)
+            killer = threading.Thread(target=kill_mid_run)
+            killer.start()
+            tiles.process_tiles(folder / "cloud.npy", tmp_path / "out", tile_points=6_000, client=c, merge=True,
+                                quiet=True, radii=("auto", "4s"))
+            killer.join()
+    finally:
+        cluster.close()
+    assert killed, "no worker was killed during the run"
+    with open(tmp_path / "out" / "curvatures.ply", "rb") as f:
+        assert f.read() == expected
+
+
+def test_an_interrupted_run_restarts_from_its_parts(fault_input, tmp_path):
+    folder, expected = fault_input
+    command = [sys.executable, "-m", "conformal_alpha_shapes.tiles", str(folder / "cloud.npy"), "--output",
+               str(tmp_path / "out"), "--tile-points", "6000", "--workers", "2", "--merge", "--radius", "auto,4s"]
+    first = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    parts = tmp_path / "out" / "parts"
+    deadline = time.monotonic() + 180
+    while time.monotonic() < deadline and first.poll() is None:
+        if parts.exists() and any(name.endswith(".ply") for name in os.listdir(parts)):
+            break
+        time.sleep(0.05)
+    assert first.poll() is None, "the run ended before it could be interrupted"
+    first.send_signal(signal.SIGINT)
+    _, error = first.communicate(timeout=60)
+    assert first.returncode == 130, error
+    assert not (tmp_path / "out" / "curvatures.ply").exists()
+    second = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    assert second.returncode == 0, second.stderr
+    reused = [line for line in second.stderr.splitlines() if "parts reused" in line]
+    assert reused and not reused[0].endswith(" 0 parts reused"), second.stderr
+    with open(tmp_path / "out" / "curvatures.ply", "rb") as f:
+        assert f.read() == expected
+
+
+def test_bad_input_fails_before_any_file_is_written(tmp_path):
+    bad = tmp_path / "bad.xyz"
+    bad.write_text("0 0 0\n1 0 0\n0 1 x\n0 0 1\n")
+    with pytest.raises(tile_io.InputError, match=r"bad.xyz:3: not a number: 'x'"):
+        tiles.process_tiles(bad, tmp_path / "out", workers=1)
+    assert not (tmp_path / "out").exists()
+    nan = tmp_path / "nan.xyz"
+    nan.write_text("0 0 0\n1 0 0\n0 1 nan\n0 0 1\n1 1 1\n")
+    with pytest.raises(tile_io.InputError, match=r"nan.xyz:3: coordinate is NaN or infinite: 'nan'"):
+        tiles.process_tiles(nan, tmp_path / "out", workers=1)
+    good = tmp_path / "good.xyz"
+    good.write_text("0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+    run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(good), "--output",
+                          str(tmp_path / "out"), "--radius", "4q"], capture_output=True, text=True)
+    assert run.returncode == 1
+    assert "--radius: not a radius: '4q'" in run.stderr
+    run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / "missing.npy"),
+                          "--output", str(tmp_path / "out")], capture_output=True, text=True)
+    assert run.returncode == 1 and "missing.npy: no such file" in run.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_input_formats_read_in_chunks(tmp_path):
+    points = np.random.default_rng(2).normal(size=(1000, 3))
+    normals = points / np.linalg.norm(points, axis=1)[:, None]
+    np.save(tmp_path / "p.npy", np.hstack([points, normals]))
+    np.savetxt(tmp_path / "p.xyz", np.hstack([points, normals]), fmt="%.17g")
+    records = np.empty(1000, [("x", "<f4"), ("y", "<f4"), ("z", "<f4"), ("nx", "<f4"), ("ny", "<f4"),
+                              ("nz", "<f4"), ("quality", "u1")])
+    for i, axis in enumerate("xyz"):
+        records[axis], records["n" + axis] = points[:, i], normals[:, i]
+    with open(tmp_path / "p.ply", "wb") as f:
+        f.write(b"ply\nformat binary_little_endian 1.0\nelement vertex 1000\n" + b"".join(
+            f"property {t} {n}\n".encode() for t, n in [("float", "x"), ("float", "y"), ("float", "z"),
+                                                        ("float", "nx"), ("float", "ny"), ("float", "nz"),
+                                                        ("uchar", "quality")]) + b"end_header\n")
+        records.tofile(f)
+    for name, tolerance in (("p.npy", 0), ("p.xyz", 0), ("p.ply", 1e-6)):
+        cloud = tile_io.open_cloud(tmp_path / name)
+        assert cloud.count == 1000 and cloud.has_normals
+        chunks = list(cloud.chunks(300))
+        assert [start for start, _, _ in chunks] == [0, 300, 600, 900]
+        read = np.vstack([p for _, p, _ in chunks])
+        assert np.allclose(read, points, rtol=0, atol=tolerance * 10)
+
+
+def test_writes_are_atomic(tmp_path):
+    target = tmp_path / "part.ply"
+
+    def fails_halfway(temporary):
+        with open(temporary, "wb") as f:
+            f.write(b"half")
+        raise OSError("disk full")
+    with pytest.raises(OSError):
+        tile_io.atomic_write(str(target), fails_halfway)
+    assert not target.exists()
+    assert os.listdir(tmp_path) == []
+    tile_io.write_manifest(str(tmp_path / "manifest.json"), {"a": 1})
+    assert tile_io.read_manifest(str(tmp_path / "manifest.json")) == {"a": 1}
+    assert sorted(os.listdir(tmp_path)) == ["manifest.json"]
