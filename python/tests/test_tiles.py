@@ -267,10 +267,10 @@ def test_an_interrupted_run_restarts_from_its_parts(fault_input, tmp_path):
     command = [sys.executable, "-m", "conformal_alpha_shapes.tiles", str(folder / "cloud.npy"), "--output",
                str(tmp_path / "out"), "--tile-points", "6000", "--workers", "2", "--merge", "--radius", "auto,4s"]
     first = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    parts = tmp_path / "out" / "parts"
+    manifest = tmp_path / "out" / "manifest.json"
     deadline = time.monotonic() + 180
     while time.monotonic() < deadline and first.poll() is None:
-        if parts.exists() and any(name.endswith(".ply") for name in os.listdir(parts)):
+        if (tile_io.read_manifest(manifest) or {}).get("parts"):  # a finished part recorded
             break
         time.sleep(0.05)
     assert first.poll() is None, "the run ended before it could be interrupted"
