@@ -45,6 +45,7 @@ SHAPE_BYTES_PER_POINT = 2300
 HELD_SHAPES_SHARE = 0.5
 # Shared points below which a seam does not vote (a corner touching a halo).
 MINIMUM_SEAM_POINTS = 20
+# Points the driver reads at a time.
 CHUNK = 1 << 20
 # estimate_noise()'s sample of the points and the neighbors of its fits
 NOISE_SAMPLE = 2000
@@ -617,16 +618,19 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
             os.makedirs(os.path.join(output, folder))
         manifest = {"arguments_hash": key, "input": os.path.abspath(input), "options": options,
                     "count": cloud.count, "parts": {}}
-    save = lambda: tile_io.write_manifest(manifest_path, manifest)
-    own_client = None
-    if client is None:
-        client, own_client = _start_client(workers, scheduler, security)
+    def save():
+        tile_io.write_manifest(manifest_path, manifest)
+    started_client = client is None
+    cluster = None
+    if started_client:
+        client, cluster = _start_client(workers, scheduler, security)
     try:
         summary = _run(client, cloud, output, options, manifest, save, threads, quiet)
     finally:
-        if own_client is not None:
+        if started_client:
             client.close()
-            own_client.close()
+        if cluster is not None:
+            cluster.close()
     if merge:
         names = manifest["names"]
         tile_io.merge_parts(os.path.join(output, "curvatures.ply"),
