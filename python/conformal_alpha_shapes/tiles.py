@@ -43,8 +43,11 @@ COVERAGE = 0.99
 # "Tiled Processing on Dask", measures the weight).
 SHAPE_BYTES_PER_POINT = 2300
 HELD_SHAPES_SHARE = 0.5
+# The cells, in spacings, whose touching joins the points of one object.
+COMPONENT_CELL_SPACINGS = 3.0
 # Shared points below which a seam does not vote (a corner touching a halo).
 MINIMUM_SEAM_POINTS = 20
+# Points the driver reads at a time.
 CHUNK = 1 << 20
 # estimate_noise()'s sample of the points and the neighbors of its fits
 NOISE_SAMPLE = 2000
@@ -114,6 +117,35 @@ def _owner(tree, points):
     return owner
 
 
+def _components(points, size):
+    """Labels (0, 1, ...) of the groups of points joined through cells of
+    side ``size`` that touch (faces, edges or corners): the separate objects
+    of a tile, which one run orients each on its own."""
+    cell = np.floor((points - points.min(axis=0)) / size).astype(np.int64) + 1
+    dims = cell.max(axis=0) + 2
+    key = (cell[:, 0] * dims[1] + cell[:, 1]) * dims[2] + cell[:, 2]
+    cells, of_point = np.unique(key, return_inverse=True)
+    first, second = [], []
+    for dx, dy, dz in [(dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)
+                       if (dx, dy, dz) > (0, 0, 0)]:
+        neighbor = cells + (dx * dims[1] + dy) * dims[2] + dz
+        at = np.minimum(np.searchsorted(cells, neighbor), len(cells) - 1)
+        found = cells[at] == neighbor
+        first.append(np.flatnonzero(found))
+        second.append(at[found])
+    first, second = np.concatenate(first), np.concatenate(second)
+    label = np.arange(len(cells))
+    while True:  # the smallest cell of each group, by propagation and pointer jumping
+        smaller = np.minimum(label[first], label[second])
+        before = label.copy()
+        np.minimum.at(label, first, smaller)
+        np.minimum.at(label, second, smaller)
+        label = label[label]
+        if np.array_equal(label, before):
+            break
+    return np.unique(label, return_inverse=True)[1][of_point]
+
+
 def _record_dtype(has_normals):
     fields = [("index", "<i8"), ("p", "<f8", (3,))]
     return np.dtype(fields + [("n", "<f8", (3,))] if has_normals else fields)
@@ -170,11 +202,10 @@ def _peak_memory():
 
 
 def _tile_noise(folder, tile, has_normals):
-    """The noise estimate of a tile's core points: (count, spacing, noise, noise_24)."""
+    """The noise estimate of a tile's core points: their number and spacing."""
     from . import estimate_noise
     _, points, _, _ = _load_tile(folder, tile, has_normals, with_halo=False)
-    e = estimate_noise(points)
-    return len(points), e.spacing, float(e), e.noise_24
+    return {"core": len(points), "spacing": estimate_noise(points).spacing}
 
 
 def _tile_outliers(folder, tile, has_normals):
@@ -332,15 +363,15 @@ def _scale_text(a):
     return text[:-1] if text.endswith(".") else text
 
 
-def _flip_layer(records, name):
-    """The values of layer ``name`` as seen from the other side of the surface."""
+def _flip_layer(records, name, rows):
+    """The values of layer ``name`` at ``rows`` as seen from the other side of the surface."""
     for axis in ("x", "y", "z"):
-        records[f"n{axis}_{name}"] *= -1
-        d1, d2 = records[f"d1{axis}_{name}"].copy(), records[f"d2{axis}_{name}"].copy()
-        records[f"d1{axis}_{name}"], records[f"d2{axis}_{name}"] = d2, d1
-    records[f"H_{name}"] *= -1
-    k1, k2 = records[f"k1_{name}"].copy(), records[f"k2_{name}"].copy()
-    records[f"k1_{name}"], records[f"k2_{name}"] = -k2, -k1
+        records[f"n{axis}_{name}"][rows] *= -1
+        d1, d2 = records[f"d1{axis}_{name}"][rows], records[f"d2{axis}_{name}"][rows]
+        records[f"d1{axis}_{name}"][rows], records[f"d2{axis}_{name}"][rows] = d2, d1
+    records[f"H_{name}"][rows] *= -1
+    k1, k2 = records[f"k1_{name}"][rows], records[f"k2_{name}"][rows]
+    records[f"k1_{name}"][rows], records[f"k2_{name}"][rows] = -k2, -k1
 
 
 def _part_path(folder, tile):
@@ -389,20 +420,27 @@ def _tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     halo = np.flatnonzero(~is_core)
     seam = os.path.join(folder, "tiles", f"seam_{tile:05d}.npy")
     seam_normals = np.stack([layer.normal[halo].astype(np.float32) for layer in first_layers])
-    seam_records = np.empty(len(halo), [("index", "<i8"), ("owner", "<i4"),
+    component = _components(points, COMPONENT_CELL_SPACINGS * job["spacing"])
+    tile_io.save_array(_tile_path(folder, tile, "component.npy"), component[core])
+    seam_records = np.empty(len(halo), [("index", "<i8"), ("owner", "<i4"), ("component", "<i4"),
                                         ("normal", "<f4", (len(first_layers), 3))])
     seam_records["index"] = index[halo]
     seam_records["owner"] = _owner(tree, points[halo])
+    seam_records["component"] = component[halo]
     seam_records["normal"] = np.moveaxis(seam_normals, 0, 1)
     tile_io.save_array(seam, seam_records)
     # the cone each scale's surface spans from the cloud's center, on the core's own vertices
+    # per scale and object, the cone its surface spans from the cloud's center, on the core's own vertices
     cones = []
     for layer in first_layers:
         own = core[layer.source[core] == 0]
-        cones.append(float(np.einsum("ij,ij->", layer.normal[own], points[own] - np.asarray(center))))
+        terms = np.einsum("ij,ij->i", layer.normal[own], points[own] - np.asarray(center))
+        cones.append(np.bincount(component[own], weights=terms, minlength=int(component.max()) + 1).tolist())
     part = _part_path(folder, tile)
     tile_io.write_part(part, records, names, descriptions)
-    return {"names": names, "descriptions": descriptions, "cones": cones, "size": os.path.getsize(part),
+    sizes = np.bincount(component[core], minlength=int(component.max()) + 1).tolist()
+    return {"names": names, "descriptions": descriptions, "cones": cones, "sizes": sizes,
+            "size": os.path.getsize(part),
             "sha256": tile_io.file_digest(part), "seconds": time.monotonic() - started,
             "memory": _peak_memory(), "points": len(points), "core": len(core),
             "a": [layer.a for layer in first_layers]}
@@ -410,37 +448,42 @@ def _tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
 
 def _tile_votes(folder, tile, names, first_names, states):
     """Votes of a tile's halo points against their owners' parts, both taken
-    unflipped (``states``: the flips the parts carry now): ``{owner: [[agree,
-    disagree] per scale]}``."""
+    unflipped (``states``: per tile and scale, the objects its part carries
+    turned): ``[(scale, this tile's object, owner, its object, agree, disagree)]``."""
     seam = np.load(os.path.join(folder, "tiles", f"seam_{tile:05d}.npy"))
-    votes = {}
+    votes = []
     for owner in np.unique(seam["owner"]):
         owner = int(owner)
         mine = seam[seam["owner"] == owner]
         part = tile_io.read_part(_part_path(folder, owner), names)
-        indices = part["input_index"].astype(np.int64)
-        rows = np.searchsorted(indices, mine["index"])
-        counts = []
+        rows = np.searchsorted(part["input_index"].astype(np.int64), mine["index"])
+        theirs_component = np.load(_tile_path(folder, owner, "component.npy"))[rows]
         for s, name in enumerate(first_names):
             theirs = np.column_stack([part[f"n{axis}_{name}"][rows] for axis in "xyz"]).astype(np.float64)
-            sign = -1.0 if states[owner][s] else 1.0
+            sign = np.where(np.isin(theirs_component, states[owner][s]), -1.0, 1.0)
             dot = sign * np.einsum("ij,ij->i", theirs, mine["normal"][:, s, :].astype(np.float64))
             valid = np.isfinite(dot) & (dot != 0)
-            counts.append([int((dot[valid] > 0).sum()), int((dot[valid] < 0).sum())])
-        votes[owner] = counts
+            pairs = np.column_stack([mine["component"][valid], theirs_component[valid]])
+            for (a, b), count in zip(*np.unique(pairs, axis=0, return_counts=True)):
+                both = valid.copy()
+                both[valid] = (pairs[:, 0] == a) & (pairs[:, 1] == b)
+                votes.append((s, int(a), owner, int(b), int((dot[both] > 0).sum()), int((dot[both] < 0).sum())))
     return votes
 
 
-def _tile_flip(folder, tile, names, scale_layers, flips):
-    """Rewrites a part with the layers of the scales in ``flips`` turned over."""
+def _tile_flip(folder, tile, names, scale_layers, turns):
+    """Rewrites a part with the layers of each scale ``s`` turned over at the
+    points of the objects ``turns[s]`` (which toggle what the part carries)."""
     path = _part_path(folder, tile)
     with open(path, "rb") as f:
         head = f.read(1 << 16)
     header = head[:head.index(b"end_header\n") + len(b"end_header\n")]
     records = np.array(tile_io.read_part(path, names))
-    for s in flips:
+    component = np.load(_tile_path(folder, tile, "component.npy"))
+    for s, objects in turns.items():
+        rows = np.flatnonzero(np.isin(component, objects))
         for name in scale_layers[s]:
-            _flip_layer(records, name)
+            _flip_layer(records, name, rows)
 
     def write(temporary):
         with open(temporary, "wb") as f:
@@ -482,7 +525,7 @@ def _run_tasks(client, function, arguments, stage, points, quiet, on_result):
     for future in as_completed(futures):
         value = future.result()
         on_result(futures[future], value)
-        progress.advance(value.get("core", 0) if isinstance(value, dict) else value[0])
+        progress.advance(value.get("core", 0) if isinstance(value, dict) else 0)
         future.release()
 
 
@@ -512,12 +555,6 @@ def _kth_smallest(paths, k):
         else:
             lo = middle + 1
     return _key_value(lo)
-
-
-def _weighted_median(values, weights):
-    order = np.argsort(values)
-    cumulative = np.cumsum(np.asarray(weights, dtype=np.float64)[order])
-    return float(np.asarray(values)[order][np.searchsorted(cumulative, cumulative[-1] / 2)])
 
 
 def _arguments_hash(input_path, options):
@@ -617,16 +654,19 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
             os.makedirs(os.path.join(output, folder))
         manifest = {"arguments_hash": key, "input": os.path.abspath(input), "options": options,
                     "count": cloud.count, "parts": {}}
-    save = lambda: tile_io.write_manifest(manifest_path, manifest)
-    own_client = None
-    if client is None:
-        client, own_client = _start_client(workers, scheduler, security)
+    def save():
+        tile_io.write_manifest(manifest_path, manifest)
+    started_client = client is None
+    cluster = None
+    if started_client:
+        client, cluster = _start_client(workers, scheduler, security)
     try:
         summary = _run(client, cloud, output, options, manifest, save, threads, quiet)
     finally:
-        if own_client is not None:
+        if started_client:
             client.close()
-            own_client.close()
+        if cluster is not None:
+            cluster.close()
     if merge:
         names = manifest["names"]
         tile_io.merge_parts(os.path.join(output, "curvatures.ply"),
@@ -660,8 +700,8 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         estimates = {}
         _run_tasks(client, _tile_noise, [(t, (output, t, has_normals)) for t in range(tiles)], "first spacing",
                    cloud.count, quiet, lambda t, value: estimates.__setitem__(t, value))
-        counts = np.array([estimates[t][0] for t in range(tiles)], dtype=np.float64)
-        first_spacing = float(np.average([estimates[t][1] for t in range(tiles)], weights=counts))
+        counts = np.array([estimates[t]["core"] for t in range(tiles)], dtype=np.float64)
+        first_spacing = float(np.average([estimates[t]["spacing"] for t in range(tiles)], weights=counts))
         _write_tile_files(cloud, tree, tiles, output, NEAR_HALO_SPACINGS * first_spacing, "halo")
         manifest.update(first_spacing=first_spacing)
         save()
@@ -751,47 +791,50 @@ def _part_is_finished(output, tile, entry):
             and tile_io.file_digest(path) == entry["sha256"])
 
 
-def _orient(votes, sizes, cones, scales, has_normals):
-    """Per tile and scale whether to turn it over: seams that disagree turn
-    the neighbor (from the largest tile, by the strongest seams); each group
-    of tiles so joined faces away from the cloud's center as one run's open
-    sheets do (outward for a closed one); with input normals, none."""
-    tiles = len(sizes)
-    flips = [[False] * scales for _ in range(tiles)]
+def _orient(votes, parts, scales, has_normals):
+    """Per tile and scale, the objects (``_components``) its part is to carry
+    turned over: an object is turned when its seam to the object it was
+    reached from votes to disagree (from the largest object, by the strongest
+    seams); each group of objects so joined faces away from the cloud's
+    center, as one run's sheets do (outward for a closed one); with input
+    normals, none."""
+    turned = [[[] for _ in range(scales)] for _ in parts]
     if has_normals:
-        return flips
+        return turned
+    units = [(t, c) for t, part in enumerate(parts) for c in range(len(part["sizes"]))]
     for s in range(scales):
         edges = {}
-        for (i, j), counts in votes.items():
-            agree, disagree = counts[s]
-            pair = (min(i, j), max(i, j))
-            a0, d0 = edges.get(pair, (0, 0))
-            edges[pair] = (a0 + agree, d0 + disagree)
-        neighbors = {t: [] for t in range(tiles)}
-        for (i, j), (agree, disagree) in edges.items():
+        for t, tile_votes in votes.items():
+            for scale, mine, owner, theirs, agree, disagree in tile_votes:
+                if scale == s:
+                    pair = tuple(sorted([(t, mine), (owner, theirs)]))
+                    counts = edges.setdefault(pair, [0, 0])
+                    counts[0] += agree
+                    counts[1] += disagree
+        neighbors = {unit: [] for unit in units}
+        for (a, b), (agree, disagree) in edges.items():
             if agree + disagree >= MINIMUM_SEAM_POINTS:
-                neighbors[i].append((abs(agree - disagree), j, disagree > agree))
-                neighbors[j].append((abs(agree - disagree), i, disagree > agree))
-        seen = [False] * tiles
-        for root in sorted(range(tiles), key=lambda t: -sizes[t]):
-            if seen[root]:
+                neighbors[a].append((abs(agree - disagree), b, disagree > agree))
+                neighbors[b].append((abs(agree - disagree), a, disagree > agree))
+        relative = {}
+        for root in sorted(units, key=lambda unit: -parts[unit[0]]["sizes"][unit[1]]):
+            if root in relative:
                 continue
-            group, frontier = [root], [(0, root, False, root)]
-            seen[root] = True
-            relative = {root: False}
+            relative[root] = False
+            group, frontier = [root], [(0, root)]
             while frontier:  # the strongest seam out of the group first
                 frontier.sort()
-                _, _, _, tile = frontier.pop()
-                for strength, other, opposite in neighbors[tile]:
-                    if not seen[other]:
-                        seen[other] = True
-                        relative[other] = relative[tile] ^ opposite
+                _, unit = frontier.pop()
+                for strength, other, opposite in neighbors[unit]:
+                    if other not in relative:
+                        relative[other] = relative[unit] ^ opposite
                         group.append(other)
-                        frontier.append((strength, other, opposite, other))
-            cone = sum(-cones[t][s] if relative[t] else cones[t][s] for t in group)
-            for t in group:
-                flips[t][s] = relative[t] ^ (cone < 0)
-    return flips
+                        frontier.append((strength, other))
+            cone = sum(-parts[t]["cones"][s][c] if relative[(t, c)] else parts[t]["cones"][s][c] for t, c in group)
+            for t, c in group:
+                if relative[(t, c)] ^ (cone < 0):
+                    turned[t][s].append(c)
+    return turned
 
 
 def _shapes_fit(client, output, manifest, has_normals):
@@ -829,7 +872,7 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
         shapes.pop(t).release()
 
     def done(t, value):
-        value = dict(value, flips=[False] * len(options["scales"]))
+        value = dict(value, flips=[[] for _ in options["scales"]])
         parts[str(t)] = value
         manifest.update(names=value["names"], descriptions=value["descriptions"])
         save()
@@ -846,17 +889,19 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
     states = [parts[str(t)]["flips"] for t in range(tiles)]
     votes = {}
     _run_tasks(client, _tile_votes, [(t, (output, t, names, first_names, states)) for t in range(tiles)],
-               "seams", 0, True,
-               lambda t, value: votes.update({(t, owner): counts for owner, counts in value.items()}))
-    flips = _orient(votes, [parts[str(t)]["core"] for t in range(tiles)],
-                    [parts[str(t)]["cones"] for t in range(tiles)], len(first_names), cloud.has_normals)
-    changes = [(t, [s for s in range(len(first_names)) if flips[t][s] != states[t][s]]) for t in range(tiles)]
-    changes = [(t, turned) for t, turned in changes if turned]
+               "seams", 0, True, votes.__setitem__)
+    flips = _orient(votes, [parts[str(t)] for t in range(tiles)], len(first_names), cloud.has_normals)
+    changes = []
+    for t in range(tiles):
+        turns = {s: sorted(set(flips[t][s]) ^ set(states[t][s])) for s in range(len(first_names))}
+        turns = {s: objects for s, objects in turns.items() if objects}
+        if turns:
+            changes.append((t, turns))
 
     def flipped(t, value):
         parts[str(t)].update(value, flips=flips[t])
         save()
-    _run_tasks(client, _tile_flip, [(t, (output, t, names, scale_layers, turned)) for t, turned in changes],
+    _run_tasks(client, _tile_flip, [(t, (output, t, names, scale_layers, turns)) for t, turns in changes],
                "orientation", 0, True, flipped)
     return _summary(manifest, votes, flips, reused, cloud, first_names)
 
@@ -865,12 +910,11 @@ def _summary(manifest, votes, flips, reused, cloud, first_names):
     """The figures of the run: decisions, seams (after orientation), worst tile, memory."""
     parts = manifest["parts"]
     seams = {}
-    for (i, j), counts in votes.items():
-        pair = (min(i, j), max(i, j))
-        entry = seams.setdefault(pair, [[0, 0] for _ in first_names])
-        for s, (agree, disagree) in enumerate(counts):
-            if flips[i][s] != flips[j][s]:
+    for i, tile_votes in votes.items():
+        for s, mine, j, theirs, agree, disagree in tile_votes:
+            if (mine in flips[i][s]) != (theirs in flips[j][s]):
                 agree, disagree = disagree, agree
+            entry = seams.setdefault((min(i, j), max(i, j)), [[0, 0] for _ in first_names])
             entry[s][0] += agree
             entry[s][1] += disagree
     seam_list = [{"tiles": list(pair), "points": [a + d for a, d in counts],
@@ -891,7 +935,8 @@ def _summary(manifest, votes, flips, reused, cloud, first_names):
             "worst_tile": {"tile": int(worst), "seconds": parts[worst]["seconds"],
                            "points": parts[worst]["points"], "core": parts[worst]["core"]},
             "tile_points_with_halo": sum(parts[t]["points"] for t in parts),
-            "reused_parts": reused, "flipped": [[t, s] for t, row in enumerate(flips) for s, f in enumerate(row) if f],
+            "reused_parts": reused,
+            "flipped": [[t, s, objects] for t, row in enumerate(flips) for s, objects in enumerate(row) if objects],
             "worker_peak_memory": {str(pid): size for pid, size in memory.items()},
             "shapes": manifest["shapes"]}
 
