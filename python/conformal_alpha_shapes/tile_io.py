@@ -281,12 +281,16 @@ def write_part(path, records, layers, descriptions):
     atomic_write(path, write)
 
 
-def read_part(path, layers):
-    """A part's records (a memory map of ``part_dtype(layers)``)."""
+def part_header(path):
+    """A part's PLY header, as bytes (its records follow it)."""
     with open(path, "rb") as f:
         head = f.read(1 << 16)
-    offset = head.index(b"end_header\n") + len(b"end_header\n")
-    return np.memmap(path, dtype=part_dtype(layers), mode="r", offset=offset)
+    return head[:head.index(b"end_header\n") + len(b"end_header\n")]
+
+
+def read_part(path, layers):
+    """A part's records (a memory map of ``part_dtype(layers)``)."""
+    return np.memmap(path, dtype=part_dtype(layers), mode="r", offset=len(part_header(path)))
 
 
 def merge_parts(path, part_paths, layers, descriptions, count):

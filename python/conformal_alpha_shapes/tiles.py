@@ -475,9 +475,7 @@ def _tile_flip(folder, tile, names, scale_layers, turns):
     """Rewrites a part with the layers of each scale ``s`` turned over at the
     points of the objects ``turns[s]`` (which toggle what the part carries)."""
     path = _part_path(folder, tile)
-    with open(path, "rb") as f:
-        head = f.read(1 << 16)
-    header = head[:head.index(b"end_header\n") + len(b"end_header\n")]
+    header = tile_io.part_header(path)
     records = np.array(tile_io.read_part(path, names))
     component = np.load(_tile_path(folder, tile, "component.npy"))
     for s, objects in turns.items():
