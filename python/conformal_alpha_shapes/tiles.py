@@ -12,21 +12,25 @@ noise and denoising, the automatic scale) is decided once over all tiles and
 given to each; each tile's core points go to a binary PLY part
 (``DIR/parts/part_NNNNN.ply``), whose orientation agrees with its neighbors'
 (a vote on the shared halo points, propagated over the tile graph).
+
+This module is the driver: ``process_tiles`` and its phases, in the order the
+data flows through the modules of the steps: ``tile_partition`` (the tiles'
+files), ``tile_tasks`` (what the workers compute per tile), ``tile_orientation``
+(the seams' votes and the parts turned), then the summary; ``tile_command``
+reads the command line and ``tile_io`` the input and the run's files.
 """
 
-import argparse
 import hashlib
 import json
 import math
 import os
-import resource
 import shutil
 import sys
 import time
 
 import numpy as np
 
-from . import tile_io
+from . import tile_command, tile_io, tile_orientation, tile_partition, tile_tasks
 
 __all__ = ["process_tiles", "halo_spacings", "format_summary", "main"]
 
@@ -38,17 +42,8 @@ AUTOMATIC_RADIUS_SPACINGS = 22.6
 FRONT_REACH_SPACINGS = 8.0
 # The share of the front's vertices the automatic scale covers (suggest_scale's default).
 COVERAGE = 0.99
-# What a tile's shape held between phases weighs per point with halo, and
-# the share of the workers' memory that the held shapes may take (the manual,
-# "Tiled Processing on Dask", measures the weight).
-SHAPE_BYTES_PER_POINT = 2300
+# The share of the workers' memory that the held shapes may take.
 HELD_SHAPES_SHARE = 0.5
-# The cells, in spacings, whose touching joins the points of one object.
-COMPONENT_CELL_SPACINGS = 3.0
-# Shared points below which a seam does not vote (a corner touching a halo).
-MINIMUM_SEAM_POINTS = 20
-# Points the driver reads at a time.
-CHUNK = 1 << 20
 # estimate_noise()'s sample of the points and the neighbors of its fits
 NOISE_SAMPLE = 2000
 NOISE_NEIGHBORS = 24
@@ -78,420 +73,6 @@ def halo_spacings(radii, rings, spacing):
         largest = max(largest, 1.5 * int(ring))
     return largest + FRONT_REACH_SPACINGS
 
-
-# --- the partition -----------------------------------------------------------
-
-def _split(sample, tiles, first):
-    """A tree of cuts over ``sample``: a leaf is a tile number, a node
-    ``[axis, cut, left, right]`` sends points below ``cut`` left; the median
-    split on the longest axis, at the share of the tiles on each side."""
-    if tiles == 1:
-        return first
-    extent = sample.max(axis=0) - sample.min(axis=0)
-    axis = int(np.argmax(extent))
-    left = tiles // 2
-    cut = float(np.quantile(sample[:, axis], left / tiles))
-    below = sample[:, axis] < cut
-    return [axis, cut, _split(sample[below], left, first), _split(sample[~below], tiles - left, first + left)]
-
-
-def _assign(tree, points, margin, index=None, out=None):
-    """Per tile, the rows of ``points`` within ``margin`` of its box (0: its core)."""
-    if out is None:
-        out, index = {}, np.arange(len(points))
-    if not isinstance(tree, list):
-        out[tree] = index
-        return out
-    axis, cut, left, right = tree
-    values = points[index, axis]
-    _assign(left, points, margin, index[values < cut + margin], out)
-    _assign(right, points, margin, index[values >= cut - margin], out)
-    return out
-
-
-def _owner(tree, points):
-    """The tile whose core holds each point."""
-    owner = np.empty(len(points), dtype=np.int32)
-    for tile, rows in _assign(tree, points, 0.0).items():
-        owner[rows] = tile
-    return owner
-
-
-def _components(points, size):
-    """Labels (0, 1, ...) of the groups of points joined through cells of
-    side ``size`` that touch (faces, edges or corners): the separate objects
-    of a tile, which one run orients each on its own."""
-    cell = np.floor((points - points.min(axis=0)) / size).astype(np.int64) + 1
-    dims = cell.max(axis=0) + 2
-    key = (cell[:, 0] * dims[1] + cell[:, 1]) * dims[2] + cell[:, 2]
-    cells, of_point = np.unique(key, return_inverse=True)
-    first, second = [], []
-    for dx, dy, dz in [(dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)
-                       if (dx, dy, dz) > (0, 0, 0)]:
-        neighbor = cells + (dx * dims[1] + dy) * dims[2] + dz
-        at = np.minimum(np.searchsorted(cells, neighbor), len(cells) - 1)
-        found = cells[at] == neighbor
-        first.append(np.flatnonzero(found))
-        second.append(at[found])
-    first, second = np.concatenate(first), np.concatenate(second)
-    label = np.arange(len(cells))
-    while True:  # the smallest cell of each group, by propagation and pointer jumping
-        smaller = np.minimum(label[first], label[second])
-        before = label.copy()
-        np.minimum.at(label, first, smaller)
-        np.minimum.at(label, second, smaller)
-        label = label[label]
-        if np.array_equal(label, before):
-            break
-    return np.unique(label, return_inverse=True)[1][of_point]
-
-
-def _record_dtype(has_normals):
-    fields = [("index", "<i8"), ("p", "<f8", (3,))]
-    return np.dtype(fields + [("n", "<f8", (3,))] if has_normals else fields)
-
-
-def _tile_path(folder, tile, kind):
-    return os.path.join(folder, "tiles", f"tile_{tile:05d}.{kind}")
-
-
-def _write_tile_files(cloud, tree, tiles, folder, margin, kind):
-    """Streams the cloud once and writes per tile its points within ``margin``
-    of its box (``kind`` "core" with margin 0, else "halo": those outside its core)."""
-    dtype = _record_dtype(cloud.has_normals)
-    temporary = {t: _tile_path(folder, t, kind) + ".tmp" for t in range(tiles)}
-    for path in temporary.values():
-        open(path, "wb").close()
-    for start, points, normals in cloud.chunks(CHUNK):
-        owner = _owner(tree, points) if kind == "halo" else None
-        for tile, rows in _assign(tree, points, margin).items():
-            if owner is not None:
-                rows = rows[owner[rows] != tile]
-            if not len(rows):
-                continue
-            records = np.empty(len(rows), dtype)
-            records["index"] = start + rows
-            records["p"] = points[rows]
-            if normals is not None:
-                records["n"] = normals[rows]
-            with open(temporary[tile], "ab") as f:
-                records.tofile(f)
-    for tile, path in temporary.items():
-        os.replace(path, _tile_path(folder, tile, kind))
-    return [os.path.getsize(_tile_path(folder, t, kind)) // dtype.itemsize for t in range(tiles)]
-
-
-def _load_tile(folder, tile, has_normals, with_halo=True):
-    """A tile's points in input order: (index, points, normals or None, is_core)."""
-    dtype = _record_dtype(has_normals)
-    core = np.fromfile(_tile_path(folder, tile, "core"), dtype=dtype)
-    halo = np.fromfile(_tile_path(folder, tile, "halo"), dtype=dtype) if with_halo else np.empty(0, dtype)
-    records = np.concatenate([core, halo])
-    is_core = np.concatenate([np.ones(len(core), bool), np.zeros(len(halo), bool)])
-    order = np.argsort(records["index"], kind="stable")
-    records, is_core = records[order], is_core[order]
-    normals = np.ascontiguousarray(records["n"]) if has_normals else None
-    return records["index"], np.ascontiguousarray(records["p"]), normals, is_core
-
-
-# --- the tasks run on the workers ------------------------------------------------
-
-def _peak_memory():
-    """This process's peak resident memory in bytes and its id."""
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024, os.getpid()
-
-
-def _tile_noise(folder, tile, has_normals):
-    """The noise estimate of a tile's core points: their number and spacing."""
-    from . import estimate_noise
-    _, points, _, _ = _load_tile(folder, tile, has_normals, with_halo=False)
-    return {"core": len(points), "spacing": estimate_noise(points).spacing}
-
-
-def _tile_outliers(folder, tile, has_normals):
-    """A tile's outlier flags (the input rule on the tile with its halo), and
-    its kept core points' coordinates, sorted per axis, for the global center."""
-    from . import _native
-    index, points, _, is_core = _load_tile(folder, tile, has_normals)
-    outlier = _native.input_outliers(points)
-    tile_io.save_array(_tile_path(folder, tile, "outlier.npy"), outlier)
-    kept = points[is_core & ~outlier]
-    for axis in range(3):
-        values = np.sort(kept[:, axis])
-        tile_io.save_array(_tile_path(folder, tile, f"axis{axis}.npy"), values)
-    return {"kept": len(kept), "outliers": index[is_core & outlier].tolist(), "core": int(is_core.sum())}
-
-
-def _kept_points(folder, tile, has_normals, core_only):
-    """A tile's points that are not outliers: (index, points, is_core)."""
-    index, points, _, is_core = _load_tile(folder, tile, has_normals)
-    kept = ~np.load(_tile_path(folder, tile, "outlier.npy"))
-    if core_only:
-        kept &= is_core
-    return index[kept], points[kept], is_core[kept]
-
-
-def _tile_half_radii(folder, tile, has_normals, center):
-    """Saves the sorted half radii of a tile's kept core points about ``center``
-    (the robust size's measure: the largest halved coordinate difference)."""
-    _, points, _ = _kept_points(folder, tile, has_normals, True)
-    values = np.sort(np.abs(points / 2 - np.asarray(center) / 2).max(axis=1))
-    tile_io.save_array(_tile_path(folder, tile, "radius.npy"), values)
-    return {"kept": len(values)}
-
-
-def _normalized(points, center, exponent):
-    """(p - c) / 2^e as the pipeline's working frame rounds it (halves, then an exact scaling)."""
-    return np.ldexp(points / 2 - np.asarray(center) / 2, 1 - exponent)
-
-
-def _mix_hash(h, x):
-    """SplitMix64's finalizer of ``h`` with ``x`` mixed in (order_free.h's mix_hash)."""
-    h = (h ^ x) + np.uint64(0x9E3779B97F4A7C15)
-    h = (h ^ (h >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
-    h = (h ^ (h >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
-    return h ^ (h >> np.uint64(31))
-
-
-def _coordinate_hash(q):
-    """order_free.h's coordinate_hash of each row of ``q`` (+0 and -0 alike)."""
-    h = np.zeros(len(q), dtype=np.uint64)
-    with np.errstate(over="ignore"):
-        for axis in range(3):
-            h = _mix_hash(h, np.ascontiguousarray(q[:, axis] + 0.0).view(np.uint64))
-    return h
-
-
-def _smallest_keys(index, q, count):
-    """The rows of the ``count`` smallest order-free keys (hash, x, y, z, then input index)."""
-    order = np.lexsort((index, q[:, 2], q[:, 1], q[:, 0], _coordinate_hash(q)))
-    return order[:count]
-
-
-def _tile_noise_sample(folder, tile, has_normals, center, exponent, count):
-    """A tile's kept core points with the ``count`` smallest order-free keys
-    in the working frame: (input indices, normalized points)."""
-    index, points, _ = _kept_points(folder, tile, has_normals, True)
-    q = _normalized(points, center, exponent)
-    rows = _smallest_keys(index, q, count)
-    return index[rows], q[rows]
-
-
-def _tile_noise_neighbors(folder, tile, has_normals, center, exponent, sample, neighbors):
-    """The kept points of a tile (core and halo) among the ``neighbors`` nearest
-    of each of its ``sample`` indices, ties included: (indices, normalized points)."""
-    index, points, _ = _kept_points(folder, tile, has_normals, False)
-    q = _normalized(points, center, exponent)
-    rows = np.searchsorted(index, sample)
-    chosen = []
-    for row in rows:
-        distance = ((q - q[row]) ** 2).sum(axis=1)
-        k = min(neighbors, len(q) - 1)
-        limit = np.partition(distance, k)[k]
-        chosen.append(np.flatnonzero(distance <= limit * (1 + 1e-9)))
-    chosen = np.unique(np.concatenate(chosen)) if chosen else np.empty(0, np.int64)
-    return index[chosen], q[chosen]
-
-
-class _TileShape:
-    """A tile's points and its job, the shape built (``conformal_alpha_shapes._job``).
-
-    A future holds one on its worker between the closing values and the
-    curvature. Moved to another worker or spilled, it travels as its tile and
-    options only, and is built again by the task that uses it.
-    """
-
-    def __init__(self, folder, tile, has_normals, job, build=True):
-        self.arguments = (folder, tile, has_normals, job)
-        self.index, self.points, self.normals, self.is_core = _load_tile(folder, tile, has_normals)
-        self.native = self._build() if build else None
-
-    def _build(self):
-        from . import _job
-        job = self.arguments[3]
-        return _job(self.points, self.normals, radii=job["radii"], rings=job["rings"],
-                    estimator=job["estimator"], denoise=job["denoise"], denoise_neighbors=job["denoise_neighbors"],
-                    extraction=job["extraction"], threads=job["threads"], spacing=job["spacing"],
-                    noise=job["noise"])
-
-    def built(self):
-        """The native job, built here if it came unbuilt."""
-        if self.native is None:
-            self.native = self._build()
-        return self.native
-
-    def __reduce__(self):
-        return (_TileShape, self.arguments + (False,))
-
-
-def _shape_size(shape):
-    """What a held shape weighs, for Dask's memory accounting."""
-    return SHAPE_BYTES_PER_POINT * len(shape.points)
-
-
-def _register_shape_size():
-    from dask.sizeof import sizeof
-    sizeof.register(_TileShape)(_shape_size)
-
-
-_register_shape_size()
-
-
-def _tile_shape(folder, tile, has_normals, job):
-    """A tile's shape, to be held on its worker."""
-    return _TileShape(folder, tile, has_normals, job)
-
-
-def _tile_closing(folder, tile, has_normals, job, shape=None):
-    """Writes the sorted closing values of a tile's core points (of ``shape``,
-    held on this worker, or of a shape built here); returns their number."""
-    started = time.monotonic()
-    held = shape is not None
-    shape = shape if held else _TileShape(folder, tile, has_normals, job)
-    closing = shape.built().closing_values()
-    if not held:
-        shape.native.release()
-    values = np.sort(closing[shape.is_core & ~np.isnan(closing)])
-    tile_io.save_array(os.path.join(folder, "tiles", f"closing_{tile:05d}.npy"), values)
-    return {"count": len(values), "seconds": time.monotonic() - started, "memory": _peak_memory(),
-            "points": len(shape.points), "core": int(shape.is_core.sum())}
-
-
-def _scale_text(a):
-    """The program's text of a scale value (std::to_string, zeros dropped)."""
-    text = ("%f" % a).rstrip("0")
-    return text[:-1] if text.endswith(".") else text
-
-
-def _flip_layer(records, name, rows):
-    """The values of layer ``name`` at ``rows`` as seen from the other side of the surface."""
-    for axis in ("x", "y", "z"):
-        records[f"n{axis}_{name}"][rows] *= -1
-        d1, d2 = records[f"d1{axis}_{name}"][rows], records[f"d2{axis}_{name}"][rows]
-        records[f"d1{axis}_{name}"][rows], records[f"d2{axis}_{name}"][rows] = d2, d1
-    records[f"H_{name}"][rows] *= -1
-    k1, k2 = records[f"k1_{name}"][rows], records[f"k2_{name}"][rows]
-    records[f"k1_{name}"][rows], records[f"k2_{name}"][rows] = -k2, -k1
-
-
-def _part_path(folder, tile):
-    return os.path.join(folder, "parts", f"part_{tile:05d}.ply")
-
-
-def _tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
-    """A tile's curvature (of ``shape``, held on this worker, or of a shape
-    built here): its part (core points), its seam file (halo points' normals,
-    per scale) and what the driver needs (layer names, cone sums)."""
-    from . import Result, _option_items
-    started = time.monotonic()
-    shape = shape if shape is not None else _TileShape(folder, tile, has_normals, job)
-    index, points, is_core = shape.index, shape.points, shape.is_core
-    native = shape.built()
-    result = Result(points, native.result(_option_items(job["tile_scales"], "scales"), None))
-    native.release()
-    per_scale = len(result.layers) // len(job["scales"])
-    names, descriptions = [], {}
-    for k, tile_name in enumerate(result.layers):
-        scale = job["scales"][k // per_scale]
-        layer = result[tile_name]
-        name, description = tile_name, layer.description
-        if scale == "auto":
-            text = _scale_text(layer.a)
-            description = description.replace(f"({text})", "(auto)", 1)
-            if len(job["scales"]) > 1:
-                name = "auto_" + tile_name.split("_", 1)[1]
-        names.append(name)
-        descriptions[name] = description
-    core = np.flatnonzero(is_core)
-    records = np.zeros(len(core), tile_io.part_dtype(names))
-    for axis, column in zip("xyz", points[core].T):
-        records[axis] = column
-    records["outlier"] = result.outlier[core]
-    records["input_index"] = index[core]
-    for name, tile_name in zip(names, result.layers):
-        layer = result[tile_name]
-        for i, axis in enumerate("xyz"):
-            records[f"n{axis}_{name}"] = layer.normal[core, i]
-            records[f"d1{axis}_{name}"] = layer.d1[core, i]
-            records[f"d2{axis}_{name}"] = layer.d2[core, i]
-        for key in ("H", "K", "k1", "k2", "radius", "distance", "source"):
-            records[f"{key}_{name}"] = getattr(layer, key)[core]
-    first_layers = [result[result.layers[s * per_scale]] for s in range(len(job["scales"]))]
-    halo = np.flatnonzero(~is_core)
-    seam = os.path.join(folder, "tiles", f"seam_{tile:05d}.npy")
-    seam_normals = np.stack([layer.normal[halo].astype(np.float32) for layer in first_layers])
-    component = _components(points, COMPONENT_CELL_SPACINGS * job["spacing"])
-    tile_io.save_array(_tile_path(folder, tile, "component.npy"), component[core])
-    seam_records = np.empty(len(halo), [("index", "<i8"), ("owner", "<i4"), ("component", "<i4"),
-                                        ("normal", "<f4", (len(first_layers), 3))])
-    seam_records["index"] = index[halo]
-    seam_records["owner"] = _owner(tree, points[halo])
-    seam_records["component"] = component[halo]
-    seam_records["normal"] = np.moveaxis(seam_normals, 0, 1)
-    tile_io.save_array(seam, seam_records)
-    # the cone each scale's surface spans from the cloud's center, on the core's own vertices
-    # per scale and object, the cone its surface spans from the cloud's center, on the core's own vertices
-    cones = []
-    for layer in first_layers:
-        own = core[layer.source[core] == 0]
-        terms = np.einsum("ij,ij->i", layer.normal[own], points[own] - np.asarray(center))
-        cones.append(np.bincount(component[own], weights=terms, minlength=int(component.max()) + 1).tolist())
-    part = _part_path(folder, tile)
-    tile_io.write_part(part, records, names, descriptions)
-    sizes = np.bincount(component[core], minlength=int(component.max()) + 1).tolist()
-    return {"names": names, "descriptions": descriptions, "cones": cones, "sizes": sizes,
-            "size": os.path.getsize(part),
-            "sha256": tile_io.file_digest(part), "seconds": time.monotonic() - started,
-            "memory": _peak_memory(), "points": len(points), "core": len(core),
-            "a": [layer.a for layer in first_layers]}
-
-
-def _tile_votes(folder, tile, names, first_names, states):
-    """Votes of a tile's halo points against their owners' parts, both taken
-    unflipped (``states``: per tile and scale, the objects its part carries
-    turned): ``[(scale, this tile's object, owner, its object, agree, disagree)]``."""
-    seam = np.load(os.path.join(folder, "tiles", f"seam_{tile:05d}.npy"))
-    votes = []
-    for owner in np.unique(seam["owner"]):
-        owner = int(owner)
-        mine = seam[seam["owner"] == owner]
-        part = tile_io.read_part(_part_path(folder, owner), names)
-        rows = np.searchsorted(part["input_index"].astype(np.int64), mine["index"])
-        theirs_component = np.load(_tile_path(folder, owner, "component.npy"))[rows]
-        for s, name in enumerate(first_names):
-            theirs = np.column_stack([part[f"n{axis}_{name}"][rows] for axis in "xyz"]).astype(np.float64)
-            sign = np.where(np.isin(theirs_component, states[owner][s]), -1.0, 1.0)
-            dot = sign * np.einsum("ij,ij->i", theirs, mine["normal"][:, s, :].astype(np.float64))
-            valid = np.isfinite(dot) & (dot != 0)
-            pairs = np.column_stack([mine["component"][valid], theirs_component[valid]])
-            for (a, b), count in zip(*np.unique(pairs, axis=0, return_counts=True)):
-                both = valid.copy()
-                both[valid] = (pairs[:, 0] == a) & (pairs[:, 1] == b)
-                votes.append((s, int(a), owner, int(b), int((dot[both] > 0).sum()), int((dot[both] < 0).sum())))
-    return votes
-
-
-def _tile_flip(folder, tile, names, scale_layers, turns):
-    """Rewrites a part with the layers of each scale ``s`` turned over at the
-    points of the objects ``turns[s]`` (which toggle what the part carries)."""
-    path = _part_path(folder, tile)
-    header = tile_io.part_header(path)
-    records = np.array(tile_io.read_part(path, names))
-    component = np.load(_tile_path(folder, tile, "component.npy"))
-    for s, objects in turns.items():
-        rows = np.flatnonzero(np.isin(component, objects))
-        for name in scale_layers[s]:
-            _flip_layer(records, name, rows)
-
-    def write(temporary):
-        with open(temporary, "wb") as f:
-            f.write(header)
-            records.tofile(f)
-    tile_io.atomic_write(path, write)
-    return {"size": os.path.getsize(path), "sha256": tile_io.file_digest(path)}
-
-
-# --- the driver ----------------------------------------------------------------
 
 class _Progress:
     """Tiles done of total, points per second and time left, on one terminal line."""
@@ -668,7 +249,7 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
     if merge:
         names = manifest["names"]
         tile_io.merge_parts(os.path.join(output, "curvatures.ply"),
-                            [_part_path(output, t) for t in range(manifest["tiles"])], names,
+                            [tile_partition.part_path(output, t) for t in range(manifest["tiles"])], names,
                             manifest["descriptions"], cloud.count)
     summary["seconds"] = time.monotonic() - started
     tile_io.write_manifest(os.path.join(output, "summary.json"), summary)
@@ -684,23 +265,24 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
     has_normals = cloud.has_normals
     if "tree" not in manifest:
         stride = max(1, cloud.count // 1_000_000)
-        sample = np.concatenate([p[(-start) % stride::stride] for start, p, _ in cloud.chunks(CHUNK)])
+        sample = np.concatenate([p[(-start) % stride::stride]
+                                 for start, p, _ in cloud.chunks(tile_partition.CHUNK)])
         tiles = max(1, math.ceil(cloud.count / options["tile_points"]))
-        tree = _split(sample, tiles, 0)
-        core = _write_tile_files(cloud, tree, tiles, output, 0.0, "core")
+        tree = tile_partition.split(sample, tiles, 0)
+        core = tile_partition.write_tile_files(cloud, tree, tiles, output, 0.0, "core")
         total = np.zeros(3)
-        for _, p, _ in cloud.chunks(CHUNK):
+        for _, p, _ in cloud.chunks(tile_partition.CHUNK):
             total += p.sum(axis=0)
         manifest.update(tree=tree, tiles=tiles, core=core, center=(total / cloud.count).tolist())
         save()
     tiles, tree = manifest["tiles"], manifest["tree"]
     if "first_spacing" not in manifest:
         estimates = {}
-        _run_tasks(client, _tile_noise, [(t, (output, t, has_normals)) for t in range(tiles)], "first spacing",
-                   cloud.count, quiet, lambda t, value: estimates.__setitem__(t, value))
+        _run_tasks(client, tile_tasks.tile_noise, [(t, (output, t, has_normals)) for t in range(tiles)],
+                   "first spacing", cloud.count, quiet, lambda t, value: estimates.__setitem__(t, value))
         counts = np.array([estimates[t]["core"] for t in range(tiles)], dtype=np.float64)
         first_spacing = float(np.average([estimates[t]["spacing"] for t in range(tiles)], weights=counts))
-        _write_tile_files(cloud, tree, tiles, output, NEAR_HALO_SPACINGS * first_spacing, "halo")
+        tile_partition.write_tile_files(cloud, tree, tiles, output, NEAR_HALO_SPACINGS * first_spacing, "halo")
         manifest.update(first_spacing=first_spacing)
         save()
     if "spacing" not in manifest:
@@ -710,7 +292,7 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         save()
     if "halo_spacings" not in manifest:
         halo = options["halo"] or halo_spacings(options["radii"], options["rings"], manifest["spacing"])
-        _write_tile_files(cloud, tree, tiles, output, halo * manifest["spacing"], "halo")
+        tile_partition.write_tile_files(cloud, tree, tiles, output, halo * manifest["spacing"], "halo")
         manifest.update(halo_spacings=halo)
         save()
 
@@ -728,26 +310,26 @@ def _global_noise(client, cloud, output, tiles, quiet):
     def outliers_done(t, value):
         kept[t] = value["kept"]
         outliers.extend(value["outliers"])
-    _run_tasks(client, _tile_outliers, [(t, (output, t, has_normals)) for t in range(tiles)], "outliers",
-               cloud.count, quiet, outliers_done)
+    _run_tasks(client, tile_tasks.tile_outliers, [(t, (output, t, has_normals)) for t in range(tiles)],
+               "outliers", cloud.count, quiet, outliers_done)
     n = sum(kept.values())
-    center = [_kth_smallest([_tile_path(output, t, f"axis{axis}.npy") for t in range(tiles)], n // 2)
+    center = [_kth_smallest([tile_partition.tile_path(output, t, f"axis{axis}.npy") for t in range(tiles)], n // 2)
               for axis in range(3)]
-    _run_tasks(client, _tile_half_radii, [(t, (output, t, has_normals, center)) for t in range(tiles)],
+    _run_tasks(client, tile_tasks.tile_half_radii, [(t, (output, t, has_normals, center)) for t in range(tiles)],
                "working frame", cloud.count, True, lambda t, value: None)
-    radii = [_tile_path(output, t, "radius.npy") for t in range(tiles)]
+    radii = [tile_partition.tile_path(output, t, "radius.npy") for t in range(tiles)]
     h = _kth_smallest(radii, n // 2)
     if not h > 0:
         h = max(float(np.load(path, mmap_mode="r")[-1]) for path in radii if kept[radii.index(path)])
     exponent = int(np.frexp(h)[1]) + 1 if h > 0 else 0  # ilogb(h) + 2
-    futures = [client.submit(_tile_noise_sample, output, t, has_normals, center, exponent, NOISE_SAMPLE,
+    futures = [client.submit(tile_tasks.tile_noise_sample, output, t, has_normals, center, exponent, NOISE_SAMPLE,
                              retries=3, pure=False) for t in range(tiles)]
     samples = client.gather(futures)
     index = np.concatenate([s[0] for s in samples])
     q = np.concatenate([s[1] for s in samples])
     owner = np.concatenate([np.full(len(s[0]), t) for t, s in enumerate(samples)])
-    chosen = _smallest_keys(index, q, NOISE_SAMPLE)
-    futures = [client.submit(_tile_noise_neighbors, output, t, has_normals, center, exponent,
+    chosen = tile_tasks.smallest_keys(index, q, NOISE_SAMPLE)
+    futures = [client.submit(tile_tasks.tile_noise_neighbors, output, t, has_normals, center, exponent,
                              np.sort(index[chosen][owner[chosen] == t]), NOISE_NEIGHBORS, retries=3, pure=False)
                for t in range(tiles) if np.any(owner[chosen] == t)]
     found = client.gather(futures)
@@ -770,7 +352,7 @@ def _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet):
     def done(t, value):
         counts[t] = value["count"]
         stats[t] = value
-    _run_tasks(client, _tile_closing,
+    _run_tasks(client, tile_tasks.tile_closing,
                [(t, (output, t, cloud.has_normals, job, shapes.get(t))) for t in range(tiles)],
                "closing values", cloud.count, quiet, done)
     n = sum(counts.values())
@@ -784,55 +366,9 @@ def _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet):
 
 def _part_is_finished(output, tile, entry):
     """Whether a part on disk is the one the manifest records (size and SHA-256)."""
-    path = _part_path(output, tile)
+    path = tile_partition.part_path(output, tile)
     return (entry is not None and os.path.exists(path) and os.path.getsize(path) == entry["size"]
             and tile_io.file_digest(path) == entry["sha256"])
-
-
-def _orient(votes, parts, scales, has_normals):
-    """Per tile and scale, the objects (``_components``) its part is to carry
-    turned over: an object is turned when its seam to the object it was
-    reached from votes to disagree (from the largest object, by the strongest
-    seams); each group of objects so joined faces away from the cloud's
-    center, as one run's sheets do (outward for a closed one); with input
-    normals, none."""
-    turned = [[[] for _ in range(scales)] for _ in parts]
-    if has_normals:
-        return turned
-    units = [(t, c) for t, part in enumerate(parts) for c in range(len(part["sizes"]))]
-    for s in range(scales):
-        edges = {}
-        for t, tile_votes in votes.items():
-            for scale, mine, owner, theirs, agree, disagree in tile_votes:
-                if scale == s:
-                    pair = tuple(sorted([(t, mine), (owner, theirs)]))
-                    counts = edges.setdefault(pair, [0, 0])
-                    counts[0] += agree
-                    counts[1] += disagree
-        neighbors = {unit: [] for unit in units}
-        for (a, b), (agree, disagree) in edges.items():
-            if agree + disagree >= MINIMUM_SEAM_POINTS:
-                neighbors[a].append((abs(agree - disagree), b, disagree > agree))
-                neighbors[b].append((abs(agree - disagree), a, disagree > agree))
-        relative = {}
-        for root in sorted(units, key=lambda unit: -parts[unit[0]]["sizes"][unit[1]]):
-            if root in relative:
-                continue
-            relative[root] = False
-            group, frontier = [root], [(0, root)]
-            while frontier:  # the strongest seam out of the group first
-                frontier.sort()
-                _, unit = frontier.pop()
-                for strength, other, opposite in neighbors[unit]:
-                    if other not in relative:
-                        relative[other] = relative[unit] ^ opposite
-                        group.append(other)
-                        frontier.append((strength, other))
-            cone = sum(-parts[t]["cones"][s][c] if relative[(t, c)] else parts[t]["cones"][s][c] for t, c in group)
-            for t, c in group:
-                if relative[(t, c)] ^ (cone < 0):
-                    turned[t][s].append(c)
-    return turned
 
 
 def _shapes_fit(client, output, manifest, has_normals):
@@ -841,10 +377,10 @@ def _shapes_fit(client, output, manifest, has_normals):
     limits = [worker.get("memory_limit") or 0 for worker in client.scheduler_info()["workers"].values()]
     if not limits or min(limits) <= 0:
         return False
-    record = _record_dtype(has_normals).itemsize
-    points = sum(manifest["core"]) + sum(os.path.getsize(_tile_path(output, t, "halo")) // record
+    record = tile_partition.record_dtype(has_normals).itemsize
+    points = sum(manifest["core"]) + sum(os.path.getsize(tile_partition.tile_path(output, t, "halo")) // record
                                          for t in range(manifest["tiles"]))
-    return points * SHAPE_BYTES_PER_POINT <= HELD_SHAPES_SHARE * sum(limits)
+    return points * tile_tasks.SHAPE_BYTES_PER_POINT <= HELD_SHAPES_SHARE * sum(limits)
 
 
 def _run(client, cloud, output, options, manifest, save, threads, quiet):
@@ -858,7 +394,7 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
     closing = "auto" in options["scales"] and "a" not in manifest
     keep = closing and todo and _shapes_fit(client, output, manifest, cloud.has_normals)
     # futures of the shapes on their workers, from the closing values to the curvature
-    shapes = {t: client.submit(_tile_shape, output, t, cloud.has_normals, job, retries=3, pure=False,
+    shapes = {t: client.submit(tile_tasks.tile_shape, output, t, cloud.has_normals, job, retries=3, pure=False,
                                key=f"shape-{t}-{os.urandom(4).hex()}") for t in range(tiles)} if keep else {}
     manifest["shapes"] = "kept" if keep else ("rebuilt" if closing and todo else "built once")
     if "auto" in options["scales"]:
@@ -874,7 +410,7 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
         parts[str(t)] = value
         manifest.update(names=value["names"], descriptions=value["descriptions"])
         save()
-    _run_tasks(client, _tile_curvatures,
+    _run_tasks(client, tile_tasks.tile_curvatures,
                [(t, (output, t, cloud.has_normals, job, manifest["center"], manifest["tree"], shapes.get(t)))
                 for t in todo],
                "curvature", sum(manifest["core"][t] for t in todo), quiet, done)
@@ -886,9 +422,11 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
     scale_layers = [names[s * per_scale:(s + 1) * per_scale] for s in range(len(options["scales"]))]
     states = [parts[str(t)]["flips"] for t in range(tiles)]
     votes = {}
-    _run_tasks(client, _tile_votes, [(t, (output, t, names, first_names, states)) for t in range(tiles)],
+    _run_tasks(client, tile_orientation.tile_votes,
+               [(t, (output, t, names, first_names, states)) for t in range(tiles)],
                "seams", 0, True, votes.__setitem__)
-    flips = _orient(votes, [parts[str(t)] for t in range(tiles)], len(first_names), cloud.has_normals)
+    flips = tile_orientation.orient(votes, [parts[str(t)] for t in range(tiles)], len(first_names),
+                                    cloud.has_normals)
     changes = []
     for t in range(tiles):
         turns = {s: sorted(set(flips[t][s]) ^ set(states[t][s])) for s in range(len(first_names))}
@@ -899,7 +437,8 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
     def flipped(t, value):
         parts[str(t)].update(value, flips=flips[t])
         save()
-    _run_tasks(client, _tile_flip, [(t, (output, t, names, scale_layers, turns)) for t, turns in changes],
+    _run_tasks(client, tile_orientation.tile_flip,
+               [(t, (output, t, names, scale_layers, turns)) for t, turns in changes],
                "orientation", 0, True, flipped)
     return _summary(manifest, votes, flips, reused, cloud, first_names)
 
@@ -924,7 +463,7 @@ def _summary(manifest, votes, flips, reused, cloud, first_names):
         memory[pid] = max(memory.get(pid, 0), size)
     worst = max(parts, key=lambda t: parts[t]["seconds"])
     agreements = [x for seam in seam_list for x, n in zip(seam["agreement"], seam["points"])
-                  if x is not None and n >= MINIMUM_SEAM_POINTS]
+                  if x is not None and n >= tile_orientation.MINIMUM_SEAM_POINTS]
     return {"tiles": manifest["tiles"], "points": cloud.count, "spacing": manifest["spacing"],
             "noise": manifest["noise"], "denoised": manifest["denoise"] == "on",
             "a": parts["0"]["a"], "halo_spacings": manifest["halo_spacings"],
@@ -947,7 +486,7 @@ _SHAPES_TEXT = {
 
 def format_summary(summary):
     """The summary as the program prints its own: a few lines of text."""
-    seams = [s for s in summary["seams"] if max(s["points"]) >= MINIMUM_SEAM_POINTS]
+    seams = [s for s in summary["seams"] if max(s["points"]) >= tile_orientation.MINIMUM_SEAM_POINTS]
     lines = [f"{summary['points']} points in {summary['tiles']} tiles "
              f"({summary['tile_points_with_halo']} with halos of {summary['halo_spacings']:.1f} spacings), "
              f"{summary['reused_parts']} parts reused",
@@ -966,94 +505,18 @@ def format_summary(summary):
     return "\n".join(lines)
 
 
-# the Python keywords in the module's messages, and the flags that set them
-_FLAGS = {"scales": "--alpha", "radii": "--radius", "rings": "--rings", "estimator": "--estimator",
-          "denoise_neighbors": "--denoise-neighbors", "denoise": "--denoise", "extraction": "--extraction",
-          "tile_points": "--tile-points", "radii, rings": "--radius, --rings"}
-
-
-def _flag_message(message):
-    """A message of the module with the program's flag for the keyword it names."""
-    for keyword in sorted(_FLAGS, key=len, reverse=True):
-        if message.startswith(keyword + ":"):
-            return _FLAGS[keyword] + message[len(keyword):]
-    return message
-
-
-def _arguments(argv):
-    parser = argparse.ArgumentParser(
-        prog="python3 -m conformal_alpha_shapes.tiles",
-        description="The program conformal_curvature's job on a cloud split into tiles, on Dask: "
-                    "parts in DIR/parts (binary PLY, the fields of curvatures.ply plus input_index), "
-                    "DIR/manifest.json, and with --merge DIR/curvatures.ply in input order.")
-    parser.add_argument("input", help="binary .ply (x y z [nx ny nz]), .npy (N x 3 or N x 6) or .xyz")
-    parser.add_argument("--output", required=True, metavar="DIR",
-                        help="the run's folder, readable and writable by every worker")
-    parser.add_argument("--tile-points", type=int, default=1_000_000, metavar="N",
-                        help="core points per tile (default 1000000)")
-    engine = parser.add_mutually_exclusive_group()
-    engine.add_argument("--workers", type=int, metavar="W",
-                        help="worker processes of the embedded cluster on 127.0.0.1 (default: one per core)")
-    engine.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler (tcp:// or tls://)")
-    parser.add_argument("--tls-ca-file", help="TLS: the certificate authority's file (with --scheduler)")
-    parser.add_argument("--tls-cert", help="TLS: this client's certificate")
-    parser.add_argument("--tls-key", help="TLS: this client's private key")
-    parser.add_argument("--merge", action="store_true", help="also write DIR/curvatures.ply in input order")
-    parser.add_argument("--alpha", default="auto", metavar="LIST", help="comma list of scales: auto and/or values")
-    parser.add_argument("--radius", default=None, metavar="LIST",
-                        help="comma list of radii: values, multiples of the spacing (4s), auto; "
-                             "default auto,2s,4s,8s,16s unless --rings is given")
-    parser.add_argument("--rings", default="", metavar="LIST", help="comma list of ring sizes from 1 to 100")
-    parser.add_argument("--estimator", default="quadric", metavar="NAME")
-    parser.add_argument("--denoise", default="auto", metavar="MODE", help="auto, on or off")
-    parser.add_argument("--denoise-neighbors", default=None, metavar="K")
-    parser.add_argument("--extraction", default="front", metavar="NAME", help="front or solid")
-    parser.add_argument("--halo", type=float, default=None, metavar="SPACINGS",
-                        help="the halo's width in spacings (default: from the largest radius, see the manual)")
-    parser.add_argument("--threads", type=int, default=1, help="threads per tile (default 1)")
-    parser.add_argument("--quiet", action="store_true", help="no progress and no summary")
-    return parser.parse_args(argv)
-
-
-def _split_list(text):
-    return [item for item in text.split(",") if item] if text else []
-
-
 def main(argv=None):
     """The command line; returns the exit status (1 with one line on stderr on failure)."""
-    args = _arguments(argv)
-    rings = _split_list(args.rings)
-    radii = _split_list(args.radius) if args.radius is not None else ([] if rings else
-                                                                      ["auto", "2s", "4s", "8s", "16s"])
-    security = None
-    if args.tls_ca_file or args.tls_cert or args.tls_key:
-        from distributed.security import Security
-        security = Security(tls_ca_file=args.tls_ca_file, tls_client_cert=args.tls_cert,
-                            tls_client_key=args.tls_key, require_encryption=True)
+    args = tile_command.arguments(argv)
+    security = tile_command.security(args)
     try:
-        ring_sizes = []
-        for ring in rings:
-            try:
-                ring_sizes.append(int(ring))
-            except ValueError:
-                raise ValueError(f"rings: not a ring size: '{ring}' (expected an integer from 1 to 100)") from None
-        neighbors = None
-        if args.denoise_neighbors is not None:
-            try:
-                neighbors = int(args.denoise_neighbors)
-            except ValueError:
-                raise ValueError(f"denoise_neighbors: not an integer: '{args.denoise_neighbors}'") from None
-        process_tiles(args.input, args.output, tile_points=args.tile_points, workers=args.workers,
-                      scheduler=args.scheduler, security=security, merge=args.merge,
-                      scales=_split_list(args.alpha), radii=radii, rings=ring_sizes, estimator=args.estimator,
-                      denoise=args.denoise, denoise_neighbors=neighbors, extraction=args.extraction,
-                      halo=args.halo, threads=args.threads, quiet=args.quiet)
+        process_tiles(args.input, args.output, security=security, **tile_command.options(args))
     except KeyboardInterrupt:
         print("conformal_alpha_shapes.tiles: interrupted; run again with the same arguments to finish",
               file=sys.stderr)
         return 130
     except (ValueError, TypeError, OSError) as e:
-        print(f"conformal_alpha_shapes.tiles: {_flag_message(str(e))}", file=sys.stderr)
+        print(f"conformal_alpha_shapes.tiles: {tile_command.flag_message(str(e))}", file=sys.stderr)
         return 1
     return 0
 
