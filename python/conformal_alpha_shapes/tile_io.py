@@ -1,6 +1,7 @@
 """Files of tiled runs (``conformal_alpha_shapes.tiles``): chunked readers of
-large clouds, the tiles' point files, the parts (binary PLY), the manifest,
-and the merge into one ``curvatures.ply``.
+large clouds, the tasks' arrays (``.npy``), the parts (binary PLY), the
+manifest, and the merge into one ``curvatures.ply``; the tiles' point files
+are ``tile_partition``'s.
 
 Readers never hold the whole cloud: binary PLY and ``.npy`` are memory-mapped
 and read in slices, ``.xyz`` is parsed a chunk of lines at a time. Every file
