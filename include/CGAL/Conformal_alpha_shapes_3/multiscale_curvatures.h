@@ -32,6 +32,52 @@
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
 
+namespace internal {
+
+// A given estimate in the working frame, checked first. The frame's scale
+// is a power of two, so the spacing of a run's `noise()` given back to a
+// run on the same points comes back to the same bits.
+template <class Kernel>
+Noise_estimate working_noise(const Noise_estimate& given, const Normalized_input<Kernel>& input)
+{
+  if(!(std::isfinite(given.spacing) && given.spacing > 0))
+    throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing must be finite and positive, not "
+                                + std::to_string(given.spacing));
+  if(!(given.noise >= 0 && given.noise_24 >= 0))
+    throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's noise must be a number, 0 or more, not "
+                                + std::to_string(given.noise) + " (16 neighbors) and "
+                                + std::to_string(given.noise_24) + " (24 neighbors)");
+  Noise_estimate working = given;
+  working.spacing = input.length_from_input(given.spacing);
+  if(!(std::isfinite(working.spacing) && working.spacing > 0))
+    throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing " + std::to_string(given.spacing)
+                                + " is out of scale with these points (of size "
+                                + std::to_string(input.size()) + ")");
+  return working;
+}
+
+// Writes the values of the shape's input point `i` at its input index, in input units.
+template <class Kernel>
+struct Input_units_writer
+{
+  const Normalized_input<Kernel>* input;
+  std::vector<Point_curvature<Kernel> >* layer;
+
+  friend void put(const Input_units_writer& w, std::size_t i, Point_curvature<Kernel> c)
+  {
+    const Normalized_input<Kernel>& input = *w.input;
+    c.distance = input.length_to_input(c.distance);
+    c.radius = input.length_to_input(c.radius);
+    c.mean_curvature = input.curvature_to_input(c.mean_curvature);
+    c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
+    c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
+    c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
+    (*w.layer)[input.input_index[i]] = c;
+  }
+};
+
+} // namespace internal
+
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
 
@@ -145,7 +191,7 @@ public:
     if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np_cas3::noise_estimate_t>::value)
       m_noise = estimate_noise(points);
     else
-      m_noise = working_noise(get_parameter(np, internal_np_cas3::noise_estimate));
+      m_noise = internal::working_noise(get_parameter(np, internal_np_cas3::noise_estimate), m_input);
     m_denoising = denoising_plan(m_noise, choose_parameter(get_parameter(np, internal_np_cas3::denoising),
                                                            AUTOMATIC_DENOISING),
                                  choose_parameter(get_parameter(np, internal_np_cas3::denoising_neighbors), 0u));
@@ -287,7 +333,7 @@ public:
       m_shape, surface, values,
       [&](std::size_t k) {
         layers[k].resize(number_of_input_points());
-        return Input_units_writer{&m_input, &layers[k]};
+        return internal::Input_units_writer<Kernel>{&m_input, &layers[k]};
       },
       parameters::vertex_input_index_map(boost::make_function_property_map<Surface_vertex>(shape_index),
         parameters::reference_normals(std::cref(m_reference_normals)).vertex_point_map(working)));
@@ -295,46 +341,6 @@ public:
   }
 
 private:
-  // A given estimate in the working frame, checked first. The frame's scale
-  // is a power of two, so the spacing of a run's `noise()` given back to a
-  // run on the same points comes back to the same bits.
-  Noise_estimate working_noise(const Noise_estimate& given) const
-  {
-    if(!(std::isfinite(given.spacing) && given.spacing > 0))
-      throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing must be finite and positive, not "
-                                  + std::to_string(given.spacing));
-    if(!(given.noise >= 0 && given.noise_24 >= 0))
-      throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's noise must be a number, 0 or more, not "
-                                  + std::to_string(given.noise) + " (16 neighbors) and "
-                                  + std::to_string(given.noise_24) + " (24 neighbors)");
-    Noise_estimate working = given;
-    working.spacing = m_input.length_from_input(given.spacing);
-    if(!(std::isfinite(working.spacing) && working.spacing > 0))
-      throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing " + std::to_string(given.spacing)
-                                  + " is out of scale with these points (of size "
-                                  + std::to_string(m_input.size()) + ")");
-    return working;
-  }
-
-  // Writes the values of the shape's input point `i` at its input index, in input units.
-  struct Input_units_writer
-  {
-    const internal::Normalized_input<Kernel>* input;
-    std::vector<Point_curvature<Kernel> >* layer;
-
-    friend void put(const Input_units_writer& w, std::size_t i, Point_curvature<Kernel> c)
-    {
-      const internal::Normalized_input<Kernel>& input = *w.input;
-      c.distance = input.length_to_input(c.distance);
-      c.radius = input.length_to_input(c.radius);
-      c.mean_curvature = input.curvature_to_input(c.mean_curvature);
-      c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
-      c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
-      c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
-      (*w.layer)[input.input_index[i]] = c;
-    }
-  };
-
   // The front grown with no bound, once.
   const Surface_front<Shape>& front() const
   {
