@@ -32,7 +32,7 @@ import numpy as np
 
 from . import tile_command, tile_io, tile_orientation, tile_partition, tile_tasks
 
-__all__ = ["process_tiles", "halo_spacings", "format_summary", "main"]
+__all__ = ["process_tiles", "halo_spacings", "format_summary", "main", "TileError"]
 
 # The automatic radius's largest candidate, in spacings (the manual, "Neighborhoods").
 AUTOMATIC_RADIUS_SPACINGS = 22.6

@@ -9,6 +9,8 @@ _Item = Union[str, float, int]
 AUTOMATIC_RADIUS_SPACINGS: float
 FRONT_REACH_SPACINGS: float
 
+class TileError(ValueError): ...
+
 def halo_spacings(radii: Sequence[_Item], rings: Sequence[int], spacing: float) -> float: ...
 def process_tiles(
     input: Union[str, os.PathLike],
