@@ -50,9 +50,29 @@
 //   address, here from its cell of smaller index (the shape's cell order,
 //   which is the order of the copy CGAL runs on). This decides the side, so
 //   the orientation, of each part's seed.
+// - the faces of the surface: CGAL creates them in the order of the finite
+//   facets (so by address as above) and turns each connected set of faces
+//   (through their borders too) to agree with its first face; a turned face
+//   takes its facet from the other cell, and so its value, which is the
+//   same up to the last bits (the facet's radius is computed in each cell's
+//   vertex order). Here the faces are in the cell index order: the same
+//   triangles and neighbors, and values that may differ from CGAL's in the
+//   last bits (within 1e-14, relatively) where CGAL's copy of the
+//   triangulation does not have its cells at increasing addresses, which
+//   is common (two runs of CGAL's front in one process, on 1,000,000
+//   points, gave the same triangles and values differing so).
 // The criterion ties are frequent among stand-by and not-valid edges,
 // whose order does not matter (they are re-evaluated all at once), and
 // rare among valid ones (two border edges sharing their candidate facet).
+//
+// The cost is CGAL's, but for the seeding (CGAL scans every facet for each
+// part: here the facets left all exterior after the first part are sorted
+// once) and the copies (no copy of the triangulation, no 2D structure).
+// Where the front leaves many holes most of the time goes to
+// re-evaluating the border left by the earlier parts each time a part
+// runs out of valid candidates (as in CGAL: at 1,000,000 points of a
+// noisy ellipsoid with 18 parts, 319 re-evaluations of 40,000 edges on
+// average).
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/triangle_soup.h>
