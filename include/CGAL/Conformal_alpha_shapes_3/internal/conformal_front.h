@@ -171,7 +171,7 @@ private:
   std::vector<Id> request_head, request_tail;  // by rank, into `requests`
   std::vector<Request> requests;
   Id free_request = none;
-  std::vector<unsigned char> selected;  // by cell index, a bit per facet
+  std::vector<std::pair<Cell_handle, int> > selected;  // the facets taken, from the side taken
   std::set<Key> ordered_border;
   int number_of_components = 0;
   int number_of_selected = 0;
@@ -400,7 +400,7 @@ private:
   }
   void select_facet(Cell_handle c, int i)
   {
-    selected[c->cell_index()] |= (unsigned char)(1u << i);
+    selected.emplace_back(c, i);
     ++number_of_selected;
   }
 
@@ -889,7 +889,6 @@ public:
     interior_head.assign(n, none);
     request_head.assign(n, none);
     request_tail.assign(n, none);
-    selected.assign(cas.number_of_cells(), 0);
 
     K = 5;
     COS_BETA = std::cos(0.52);
@@ -943,14 +942,23 @@ public:
       soup.triangles.push_back(triangle);
       facets.emplace_back(c, i);
     };
-    for_each_finite_facet([&](Cell_handle c, int i) {
-      if(selected[c->cell_index()] & (1u << i))
-        add(c, i);
-      const Cell_handle n = c->neighbor(i);
-      const int ni = n->index(c);
-      if(selected[n->cell_index()] & (1u << ni))
-        add(n, ni);
-    });
+    // the order of `for_each_finite_facet()`, a facet's first cell's side
+    // first: sorted rather than found by a walk over every facet
+    {
+      std::vector<std::pair<std::uint64_t, std::size_t> > order;
+      order.reserve(selected.size());
+      for(std::size_t k = 0; k < selected.size(); ++k)
+      {
+        const Cell_handle c = selected[k].first, n = c->neighbor(selected[k].second);
+        const bool first = c->cell_index() < n->cell_index();
+        const std::uint64_t facet = first ? std::uint64_t(c->cell_index()) * 4 + std::uint64_t(selected[k].second)
+                                          : std::uint64_t(n->cell_index()) * 4 + std::uint64_t(n->index(c));
+        order.emplace_back(2 * facet + (first ? 0 : 1), k);
+      }
+      std::sort(order.begin(), order.end());
+      for(const auto& o : order)
+        add(selected[o.second].first, selected[o.second].second);
+    }
     soup_vertex = std::vector<std::size_t>();
     pair_neighbors(soup);
 
