@@ -75,6 +75,7 @@
 // average).
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/triangle_soup.h>
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 
@@ -228,6 +229,10 @@ private:
   {
     if(++calls % 1024 == 0)
       interruption.throw_if_stopped();
+    return facet_priority(c, i);
+  }
+  double facet_priority(Cell_handle c, int i) const
+  {
     return double(cas.conformal_alpha(c, i))
            * (1 + 1e-12 * facet_tie_breaker(c->vertex((i + 1) & 3)->vertex_index(),
                                             c->vertex((i + 2) & 3)->vertex_index(),
@@ -513,18 +518,41 @@ private:
     double min_value = infinity;
     if(!re_init)
     {
-      // every vertex is exterior: the seeding's test is made once
+      // every vertex is exterior: the seeding's test is made once; the
+      // first smallest facet is found in chunks of cells side by side, the
+      // first smallest of the first chunk that has the smallest value
       if(!seeding.may_seed(*this))
         return false;
-      for_each_finite_facet([&](Cell_handle c, int i) {
-        const double value = seed_priority(c, i);
-        if(value < min_value)
+      struct Best
+      {
+        double value;
+        std::uint64_t facet;
+      };
+      const std::vector<Best> best = partial_results_in_chunks<Parallel_if_available_tag>(
+        cells_by_index.size(), [&]() { return Best{infinity, 0}; },
+        [&](std::size_t begin, std::size_t end, Best& chunk) {
+          for(std::size_t k = begin; k < end; ++k)
+          {
+            if((k - begin) % 4096 == 0 && interruption.stop_requested())
+              return;
+            const Cell_handle c = cells_by_index[k];
+            for(int i = 0; i < 4; ++i)
+              if(k < c->neighbor(i)->cell_index() && !cas.is_infinite(c, i))
+              {
+                const double value = facet_priority(c, i);
+                if(value < chunk.value)
+                  chunk = Best{value, 4 * std::uint64_t(k) + std::uint64_t(i)};
+              }
+          }
+        });
+      interruption.throw_if_stop_was_requested();
+      for(const Best& chunk : best)
+        if(chunk.value < min_value)
         {
-          min_c = c;
-          min_i = i;
-          min_value = value;
+          min_value = chunk.value;
+          min_c = cells_by_index[chunk.facet / 4];
+          min_i = int(chunk.facet % 4);
         }
-      });
     }
     else
     {
@@ -544,9 +572,6 @@ private:
           }
         });
         std::sort(seeds.begin(), seeds.end());
-        cells_by_index.resize(cas.number_of_cells());
-        for(auto c = cas.tds().cells_begin(); c != cas.tds().cells_end(); ++c)
-          cells_by_index[c->cell_index()] = c;
       }
       while(next_seed < seeds.size())
       {
@@ -877,6 +902,9 @@ public:
         rank_of_index[v->vertex_index()] = r;
       vertex_by_rank.push_back(v);
     }
+    cells_by_index.resize(cas.number_of_cells());
+    for(auto c = cas.tds().cells_begin(); c != cas.tds().cells_end(); ++c)
+      cells_by_index[c->cell_index()] = c;
     mark.assign(n, -1);
     first_record.resize(n);
     second_record.resize(n);
