@@ -65,9 +65,16 @@
 // whose order does not matter (they are re-evaluated all at once), and
 // rare among valid ones (two border edges sharing their candidate facet).
 //
+// So the two soups become the same bits once a facet's value no longer
+// depends on the side it is read from (for instance: always read from its
+// cell of smaller index, in both fronts); that changes the library's
+// values in their last bits, and is left for later.
+//
 // The cost is CGAL's, but for the seeding (CGAL scans every facet for each
-// part: here the facets left all exterior after the first part are sorted
-// once) and the copies (no copy of the triangulation, no 2D structure).
+// part: here the first scan runs in chunks side by side, and the facets
+// left all exterior after the first part are sorted once), the copies (no
+// copy of the triangulation, no 2D structure) and the surface's faces
+// (sorted from the facets taken, not found by a walk over all facets).
 // Where the front leaves many holes most of the time goes to
 // re-evaluating the border left by the earlier parts each time a part
 // runs out of valid candidates (as in CGAL: at 1,000,000 points of a
