@@ -4,6 +4,7 @@
 // the heap layout (through Multiscale_curvatures).
 #include <boost/test/unit_test.hpp>
 
+#include <CGAL/Conformal_alpha_shapes_3/internal/conformal_front.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 #include <CGAL/Conformal_alpha_shapes_3/surface_front.h>
 
@@ -11,13 +12,17 @@
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_point_values.h"
+#include "cas3_test_data.h"
 #include "cas3_test_types.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <numeric>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -283,6 +288,96 @@ BOOST_AUTO_TEST_CASE(the_heap_layout_does_not_change_the_results)
       for(std::size_t i = 0; i < s.points.size(); ++i)
         differing += same_bits(reference[l][i], layers[l][i]) ? 0 : 1;
       BOOST_TEST_CONTEXT("heap shuffled with seed " << seed << ", neighborhood " << l) { BOOST_TEST(differing == 0u); }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// The advancing front grown on the shape's own triangulation
+// (internal/conformal_front.h) against CGAL's, run on a copy of it
+// (advancing_front_soup()): the same soup. The one difference allowed is
+// in the last bits of a value: a facet's conformal value is measured from
+// one of its two cells, and CGAL's front takes the cell that its
+// reorientation of the surface leaves below the triangle, which depends on
+// the order of its faces in memory.
+BOOST_AUTO_TEST_SUITE(conformal_front)
+
+bool same_double_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+struct Front_cloud
+{
+  std::string name;
+  std::vector<Point> points;
+};
+
+std::vector<Front_cloud> front_clouds()
+{
+  std::vector<Front_cloud> clouds;
+  auto sampled = [&](const std::string& name, Sample s, double noise, unsigned seed) {
+    cas3_analytic::add_normal_noise(s, noise, seed);
+    clouds.push_back(Front_cloud{name, s.points});
+  };
+  sampled("noisy sphere", cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 1, 1), 0.1, 1);
+  sampled("very noisy sphere", cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 1, 1), 0.6, 2);
+  sampled("noisy ellipsoid", cas3_analytic::ellipsoid_truth_sample<Point, Vector>(4000, 1, 0.7, 0.4), 0.1, 3);
+  sampled("open noisy cap", cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 1, 1, 0.2), 0.1, 4);
+  sampled("noisy torus", cas3_analytic::torus_truth_sample<Point, Vector>(4000, 1.0, 0.35), 0.1, 5);
+  clouds.push_back(Front_cloud{"bunny", cas3_test::read_points<Point>(CAS3_BUNNY_XYZ)});
+  return clouds;
+}
+
+BOOST_AUTO_TEST_CASE(the_same_soup_as_cgal_advancing_front)
+{
+  for(const Front_cloud& cloud : front_clouds())
+  {
+    const Cas cas(cloud.points.begin(), cloud.points.end());
+    const CAS3::internal::Advancing_front_soup cgal = CAS3::internal::advancing_front_soup(cas);
+    std::size_t anomalies = 0;
+    const CAS3::internal::Advancing_front_soup ours = CAS3::internal::conformal_front_soup(cas, &anomalies);
+    BOOST_TEST_CONTEXT(cloud.name)
+    {
+      BOOST_TEST(anomalies == 0u);
+      BOOST_TEST(ours.triangles.size() == cgal.triangles.size());
+      BOOST_TEST((ours.shape_vertex == cgal.shape_vertex));
+      BOOST_TEST((ours.triangles == cgal.triangles));
+      BOOST_TEST((ours.neighbors == cgal.neighbors));
+      BOOST_REQUIRE(ours.values.size() == cgal.values.size());
+      std::size_t identical = 0, close = 0;
+      for(std::size_t t = 0; t < ours.values.size(); ++t)
+      {
+        identical += same_double_bits(ours.values[t], cgal.values[t]) ? 1 : 0;
+        close += std::abs(ours.values[t] - cgal.values[t]) <= 1e-14 * std::abs(cgal.values[t]) ? 1 : 0;
+      }
+      BOOST_TEST(close == ours.values.size());
+      BOOST_TEST_MESSAGE(cloud.name << ": " << ours.triangles.size() << " triangles, " << identical
+                                    << " values identical to CGAL's front's, " << close << " within 1e-14");
+    }
+  }
+}
+
+// Its soup, in the front's order too, does not depend on the heap layout.
+BOOST_AUTO_TEST_CASE(the_heap_layout_does_not_change_the_soup)
+{
+  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 0.8, 0.6, 0.1);
+  cas3_analytic::add_normal_noise(s, 0.3, 6);
+  const Cas cas(s.points.begin(), s.points.end());
+  const CAS3::internal::Advancing_front_soup reference = CAS3::internal::conformal_front_triangles(cas);
+  for(unsigned seed : {1u, 2u})
+  {
+    const std::vector<void*> kept = scramble_the_heap(seed);
+    const CAS3::internal::Advancing_front_soup soup = CAS3::internal::conformal_front_triangles(cas);
+    for(void* block : kept)
+      std::free(block);
+    BOOST_TEST_CONTEXT("heap shuffled with seed " << seed)
+    {
+      BOOST_TEST((soup.shape_vertex == reference.shape_vertex));
+      BOOST_TEST((soup.triangles == reference.triangles));
+      BOOST_TEST((soup.neighbors == reference.neighbors));
+      std::size_t differing = 0;
+      for(std::size_t t = 0; t < soup.values.size() && t < reference.values.size(); ++t)
+        differing += same_double_bits(soup.values[t], reference.values[t]) ? 0 : 1;
+      BOOST_TEST(differing == 0u);
     }
   }
 }
