@@ -92,6 +92,12 @@ inline double facet_tie_breaker(std::size_t u, std::size_t v, std::size_t w)
   return double(h >> 11) / 9007199254740992.0;  // 2^53
 }
 
+// A facet's value nudged by its tie breaker: the priority both fronts use.
+inline double tie_broken_value(double value, std::size_t u, std::size_t v, std::size_t w)
+{
+  return value * (1 + 1e-12 * facet_tie_breaker(u, v, w));
+}
+
 // The front's priority: the conformal value of a facet (infinite facets and
 // the cells the front creates have an infinite value: never taken); no seed
 // is taken once seeding has stopped. The front calls it for every candidate
@@ -114,8 +120,8 @@ struct Conformal_priority
                       && c->vertex((i + 3) & 3)->is_exterior();
     if(seed && !seeding->may_seed(front))
       return std::numeric_limits<double>::infinity();
-    return value * (1 + 1e-12 * facet_tie_breaker(c->vertex((i + 1) & 3)->id(), c->vertex((i + 2) & 3)->id(),
-                                                  c->vertex((i + 3) & 3)->id()));
+    return tie_broken_value(value, c->vertex((i + 1) & 3)->id(), c->vertex((i + 2) & 3)->id(),
+                            c->vertex((i + 3) & 3)->id());
   }
 };
 

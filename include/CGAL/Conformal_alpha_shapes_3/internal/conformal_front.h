@@ -221,14 +221,11 @@ private:
   {
     if(++calls % 1024 == 0)
       interruption.throw_if_stopped();
-    const double value = double(cas.conformal_alpha(c, i));
     const bool seed = is_exterior(rank(c, (i + 1) & 3)) && is_exterior(rank(c, (i + 2) & 3))
                       && is_exterior(rank(c, (i + 3) & 3));
     if(seed && !seeding.may_seed(*this))
       return infinity;
-    return value * (1 + 1e-12 * facet_tie_breaker(c->vertex((i + 1) & 3)->vertex_index(),
-                                                  c->vertex((i + 2) & 3)->vertex_index(),
-                                                  c->vertex((i + 3) & 3)->vertex_index()));
+    return facet_priority(c, i);
   }
   // the priority of a finite facet whose vertices are all exterior, with
   // the seeding's test made once per seeding (see `init()`)
@@ -240,10 +237,8 @@ private:
   }
   double facet_priority(Cell_handle c, int i) const
   {
-    return double(cas.conformal_alpha(c, i))
-           * (1 + 1e-12 * facet_tie_breaker(c->vertex((i + 1) & 3)->vertex_index(),
-                                            c->vertex((i + 2) & 3)->vertex_index(),
-                                            c->vertex((i + 3) & 3)->vertex_index()));
+    return tie_broken_value(double(cas.conformal_alpha(c, i)), c->vertex((i + 1) & 3)->vertex_index(),
+                            c->vertex((i + 2) & 3)->vertex_index(), c->vertex((i + 3) & 3)->vertex_index());
   }
 
   // --- border records ---------------------------------------------------
