@@ -31,6 +31,7 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -375,8 +376,11 @@ public:
       return ordinary_alpha(n, n->index(c));
     if(c->encroaches_facet(i) || n->encroaches_facet(n->index(c)))
       return (std::min)(c->alpha(), n->alpha());
-    const FT radius = std::sqrt(this->geom_traits().compute_squared_radius_3_object()(
-      c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(), c->vertex((i + 3) & 3)->point()));
+    // the radius in the order of the vertices' indices, so that a facet has
+    // the same value in its last bits from either of its cells
+    std::array<Vertex_handle, 3> v{{c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}};
+    std::sort(v.begin(), v.end(), [](Vertex_handle a, Vertex_handle b) { return a->vertex_index() < b->vertex_index(); });
+    const FT radius = std::sqrt(this->geom_traits().compute_squared_radius_3_object()(v[0]->point(), v[1]->point(), v[2]->point()));
     // a nearly collinear hull facet far out may have a radius beyond
     // double's range: +infinity, or NaN (infinity times 0) made +infinity,
     // so that every value stays ordered

@@ -219,31 +219,13 @@ def test_scheduler_and_workers_on_localhost(tmp_path):
 
 
 def assert_same_output(path, expected):
-    """The bytes of an undisturbed run, or its answer where the front broke a
-    tie otherwise: CGAL's advancing front takes candidates of equal priority
-    in the order of their records' addresses, and a worker's heap depends on
-    the tiles it ran before (the manual, "Tiled Processing on Dask")."""
+    """The bytes of an undisturbed run: nothing a tile computes depends on its
+    worker's heap or on the tiles it ran before (the manual, "Tiled
+    Processing on Dask")."""
     with open(path, "rb") as f:
         data = f.read()
-    if data == expected:
-        return
-    end = b"end_header\n"
-    header = data[:data.index(end) + len(end)]
-    assert header == expected[:expected.index(end) + len(end)]
-    names = [line.split()[2][len("H_"):] for line in header.decode().splitlines()
-             if line.startswith("property float H_")]
-    dtype = tile_io.part_dtype(names, False)
-    mine = np.frombuffer(data[len(header):], dtype)
-    theirs = np.frombuffer(expected[len(header):], dtype)
-    assert np.array_equal(mine["x"], theirs["x"]) and np.array_equal(mine["outlier"], theirs["outlier"])
-    same_bytes = mine.view(f"V{dtype.itemsize}") == theirs.view(f"V{dtype.itemsize}")
-    assert np.mean(same_bytes) >= 0.95
-    for name in names:
-        dot = np.einsum("ij,ij->i", normals_of(mine, name), normals_of(theirs, name))
-        assert np.mean(dot[np.isfinite(dot)] > 0) >= 0.995, name
-        H, H_expected = mine[f"H_{name}"].astype(np.float64), theirs[f"H_{name}"].astype(np.float64)
-        both = np.isfinite(H) & np.isfinite(H_expected)
-        assert np.median(np.abs(H[both] - H_expected[both])) <= 0.01 * np.median(np.abs(H_expected[both])), name
+    assert len(data) == len(expected)
+    assert data == expected, f"{sum(a != b for a, b in zip(data, expected))} bytes differ"
 
 
 @pytest.fixture(scope="module")

@@ -4,7 +4,7 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_SURFACE_FRONT_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_SURFACE_FRONT_H
 
-#include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/conformal_front.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/orient_surface_parts.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_output_maps.h>
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
@@ -33,8 +33,9 @@ method of `extract_surface()` and `suggest_scale()`, which grow it anew at
 each call; keep one `Surface_front` to extract several scales of one shape.
 
 The front grows facet by facet over the Delaunay facets, from the smallest
-conformal value, as CGAL's `Advancing_front_surface_reconstruction` grows a
-surface. (Facets between two cells of the complex are candidates too: under
+conformal value, by the rules of CGAL's
+`Advancing_front_surface_reconstruction` but on the shape's own
+triangulation (no copy of it). (Facets between two cells of the complex are candidates too: under
 noise, the flat cells along the sampled surface enter the complex before the
 surface closes, and the facets between them are the surface.) It only grows
 where the surface stays a manifold, so a noisy layer gives one sheet, not a
@@ -54,7 +55,7 @@ public:
   typedef ConformalAlphaShape Shape;
 
   /// Grows the front over `cas`; an empty front when `cas` has dimension below 3.
-  explicit Surface_front(const Shape& cas) : m_shape(cas), m_soup(internal::advancing_front_soup(cas)) {}
+  explicit Surface_front(const Shape& cas) : m_shape(cas), m_soup(internal::conformal_front_soup(cas)) {}
 
   /// the number of faces of the front (of the surface at an infinite scale)
   std::size_t number_of_faces() const { return m_soup.triangles.size(); }

@@ -4,12 +4,13 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CONFORMAL_FRONT_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CONFORMAL_FRONT_H
 
-// The advancing front of `advancing_front_soup()` (advancing_front_facets.h)
-// grown on the shape's own triangulation: no copy of it, no 2D data
+// The advancing front that grows the surface (the manual, "The Advancing
+// Front"), the soup of triangle_soup.h, grown on the shape's own
+// triangulation: no copy of it, no 2D data
 // structure, the front's state in flat arrays indexed by vertex rank and
 // cell index. It follows the rules of CGAL's
 // Advancing_front_surface_reconstruction (CGAL 5.5) with the priority
-// `Conformal_priority`, so that it selects the same facets:
+// `Conformal_priority` (cgal_front.h), so that it selects the same facets:
 //
 // - a part is seeded at the smallest facet (by priority) whose three
 //   vertices are off the surface, the first one in the order of the finite
@@ -52,23 +53,14 @@
 //   the orientation, of each part's seed.
 // - the faces of the surface: CGAL creates them in the order of the finite
 //   facets (so by address as above) and turns each connected set of faces
-//   (through their borders too) to agree with its first face; a turned face
-//   takes its facet from the other cell, and so its value, which is the
-//   same up to the last bits (the facet's radius is computed in each cell's
-//   vertex order). Here the faces are in the cell index order: the same
-//   triangles and neighbors, and values that may differ from CGAL's in the
-//   last bits (within 1e-14, relatively) where CGAL's copy of the
-//   triangulation does not have its cells at increasing addresses, which
-//   is common (two runs of CGAL's front in one process, on 1,000,000
-//   points, gave the same triangles and values differing so).
+//   (through their borders too) to agree with its first face. Here the
+//   faces are in the cell index order: the same triangles and neighbors.
+//   A facet's value is the same from either of its cells (its radius is
+//   computed in the order of its vertices' indices), so the values are
+//   the same bits as CGAL's.
 // The criterion ties are frequent among stand-by and not-valid edges,
 // whose order does not matter (they are re-evaluated all at once), and
 // rare among valid ones (two border edges sharing their candidate facet).
-//
-// So the two soups become the same bits once a facet's value no longer
-// depends on the side it is read from (for instance: always read from its
-// cell of smaller index, in both fronts); that changes the library's
-// values in their last bits, and is left for later.
 //
 // The cost is CGAL's, but for the seeding (CGAL scans every facet for each
 // part: here the first scan runs in chunks side by side, and the facets
@@ -81,8 +73,8 @@
 // noisy ellipsoid with 18 parts, 319 re-evaluations of 40,000 edges on
 // average).
 
-#include <CGAL/Conformal_alpha_shapes_3/internal/advancing_front_facets.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/front_priority.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/triangle_soup.h>
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 
@@ -949,7 +941,7 @@ public:
   // first face, a face turned taking its facet from its other side (so its
   // value too: the facet's conformal value differs in the last bits from
   // one side to the other). The soup's vertices are numbered in the order
-  // of the turned faces, as `front_triangles()` numbers them.
+  // of the turned faces, as `cgal_front_triangles()` numbers them.
   Advancing_front_soup surface() const
   {
     const std::size_t no = std::size_t(-1);
@@ -1109,11 +1101,10 @@ public:
   }
 };
 
-// The soup of `front_triangles()` after `pair_neighbors()`: the front's
-// triangles in its order, oriented as CGAL's front orients them, with
-// their values and neighbors, grown on the shape's own triangulation (see
-// the top of this file). `anomalies`, if given, counts the states in which
-// CGAL's front would have printed a warning or written through a null
+// The front's triangles in its order, oriented as CGAL's front orients
+// them, with their values and neighbors (those of `cgal_front_triangles()`
+// after `pair_neighbors()`). `anomalies`, if given, counts the states in
+// which CGAL's front would have printed a warning or written through a null
 // pointer (none expected).
 template <class Cas>
 Advancing_front_soup conformal_front_triangles(const Cas& cas, std::size_t* anomalies = nullptr)
@@ -1127,7 +1118,13 @@ Advancing_front_soup conformal_front_triangles(const Cas& cas, std::size_t* anom
   return front.surface();
 }
 
-// The soup of `advancing_front_soup()`, in the canonical order.
+// The triangle soup grown facet by facet over the finite Delaunay facets,
+// smaller conformal values first, with no bound on the scale. The front
+// only grows where the surface stays an oriented 2-manifold, so the soup is
+// one sheet per part of the sampled surface, closed or with a border,
+// consistently oriented within each part, in the canonical order. The soup
+// at a scale `a` is cut from it (`pruned_soup()`), so that one front serves
+// every scale.
 template <class Cas>
 Advancing_front_soup conformal_front_soup(const Cas& cas, std::size_t* anomalies = nullptr)
 {

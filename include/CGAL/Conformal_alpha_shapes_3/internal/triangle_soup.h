@@ -4,7 +4,7 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_TRIANGLE_SOUP_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_TRIANGLE_SOUP_H
 
-// The surface as the advancing front leaves it (advancing_front_facets.h),
+// The surface as the advancing front leaves it (conformal_front.h),
 // a soup of triangles with their neighbors, and what is done to it before
 // it becomes a mesh: a canonical order, and the cut at a scale.
 
@@ -44,7 +44,7 @@ struct Advancing_front_soup
 // the first with the second, the third with the fourth, and a face left
 // alone has a border there. The front leaves at most two faces on an edge,
 // so in practice this is: the two triangles on an edge are neighbors. The
-// triangles must be in the front's order (`front_triangles()`). Edges are
+// triangles must be in the front's order (`conformal_front_triangles()`). Edges are
 // grouped by their smaller vertex (a counting sort), then sorted by the
 // other vertex and by triangle, so that a vertex of very high degree (the
 // center of a fan) costs `d log d`, not `d^2`.

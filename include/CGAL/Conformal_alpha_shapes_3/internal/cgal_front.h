@@ -1,11 +1,16 @@
 // Copyright (c) 2026 The Conformal_alpha_shapes_3 authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ADVANCING_FRONT_FACETS_H
-#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ADVANCING_FRONT_FACETS_H
+#ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CGAL_FRONT_H
+#define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CGAL_FRONT_H
+
+// The advancing front of CGAL's Advancing_front_surface_reconstruction with
+// the conformal priority: the reference that the library's own front
+// (conformal_front.h) reproduces, kept for the tests and the benchmark that
+// compare the two; the library does not use it.
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
-#include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/front_priority.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/triangle_soup.h>
 
 #include <CGAL/Advancing_front_surface_reconstruction.h>
@@ -46,56 +51,6 @@ double copied_facet_value(const Cas& cas, typename Cas::Cell_handle shape_cell, 
 {
   return shape_cell == typename Cas::Cell_handle() ? std::numeric_limits<double>::infinity()
                                                    : double(cas.conformal_alpha(shape_cell, i));
-}
-
-// Each new part of the front starts from the smallest facet whose vertices
-// are all off the surface, found by a scan over every facet. Where the front
-// finds only small pockets (points it could not attach, a sponge of noise)
-// those scans would make it quadratic: seeding stops once the last 16 parts
-// held fewer than 8 faces each on average (they are pockets too small to
-// carry curvature), or after 64 + n / 1000 parts.
-struct Front_seeding
-{
-  int maximum_parts;
-  std::vector<int> faces_before_part;  // by part, the front's faces when it was seeded
-  bool stopped = false;
-
-  explicit Front_seeding(std::size_t number_of_vertices) : maximum_parts(64 + int(number_of_vertices / 1000)) {}
-
-  // Called with every seed candidate: false once seeding has stopped.
-  template <class AdvancingFront>
-  bool may_seed(const AdvancingFront& front)
-  {
-    const int part = front.number_of_connected_components();
-    if(!stopped && part > int(faces_before_part.size()))
-    {
-      faces_before_part.push_back(front.number_of_facets());
-      const std::size_t n = faces_before_part.size();
-      stopped = int(n) > maximum_parts
-                || (n > 16 && faces_before_part[n - 1] - faces_before_part[n - 17] < 16 * 8);
-    }
-    return !stopped;
-  }
-};
-
-// A number in [0, 1) that depends only on the three vertices of a facet:
-// the front orders equal priorities by memory address, so that exact ties
-// (frequent on regular samples) would make the surface depend on how the
-// input was allocated; a relative nudge of 1e-12 by this number breaks them
-// the same way on every run.
-inline double facet_tie_breaker(std::size_t u, std::size_t v, std::size_t w)
-{
-  if(u > v) std::swap(u, v);
-  if(v > w) std::swap(v, w);
-  if(u > v) std::swap(u, v);
-  const std::uint64_t h = mix_hash(mix_hash(mix_hash(0, u), v), w);
-  return double(h >> 11) / 9007199254740992.0;  // 2^53
-}
-
-// A facet's value nudged by its tie breaker: the priority both fronts use.
-inline double tie_broken_value(double value, std::size_t u, std::size_t v, std::size_t w)
-{
-  return value * (1 + 1e-12 * facet_tie_breaker(u, v, w));
 }
 
 // The front's priority: the conformal value of a facet (infinite facets and
@@ -184,7 +139,7 @@ void copy_triangulation(const Cas& cas, FrontTriangulation& triangulation, std::
   triangulation.set_infinite_vertex(infinite_copy);
 }
 
-// The triangles of `advancing_front_soup()`, with their values, in the
+// The triangles of `cgal_front_soup()`, with their values, in the
 // order the front's surface holds them; their neighbors are left to
 // `pair_neighbors()`, once the front is freed.
 //
@@ -193,7 +148,7 @@ void copy_triangulation(const Cas& cas, FrontTriangulation& triangulation, std::
 // triangulation (a combinatorial copy: no predicate is evaluated again) whose
 // cells point to the shape's cells they copy.
 template <class Cas>
-Advancing_front_soup front_triangles(const Cas& cas)
+Advancing_front_soup cgal_front_triangles(const Cas& cas)
 {
   typedef typename Cas::Geom_traits Gt;
   typedef Advancing_front_surface_reconstruction_vertex_base_3<Gt> Vb;
@@ -245,22 +200,16 @@ Advancing_front_soup front_triangles(const Cas& cas)
   return soup;
 }
 
-// The triangle soup (triangle_soup.h) grown facet by facet over the finite
-// Delaunay facets (the manual, "The Advancing Front"), by CGAL's
-// Advancing_front_surface_reconstruction with the conformal value of a facet
-// as its priority: smaller values first, with no bound on the scale. The
-// front only grows where the surface stays an oriented 2-manifold, so the
-// soup is one sheet per part of the sampled surface, closed or with a
-// border, consistently oriented within each part. The soup at a scale `a`
-// is cut from it (`pruned_soup()`), so that one front serves every scale.
+// The soup of `conformal_front_soup()` grown by CGAL's front on a copy of
+// the shape's triangulation: the same triangles, neighbors and values.
 template <class Cas>
-Advancing_front_soup advancing_front_soup(const Cas& cas)
+Advancing_front_soup cgal_front_soup(const Cas& cas)
 {
   // paired and ordered once the front and its copy of the triangulation
   // are freed, so that the ordering's arrays do not add to the front's
   // memory peak
   Interruption_point interruption;
-  Advancing_front_soup soup = front_triangles(cas);
+  Advancing_front_soup soup = cgal_front_triangles(cas);
   interruption.throw_if_stopped();
   pair_neighbors(soup);
   interruption.throw_if_stopped();
@@ -272,4 +221,4 @@ Advancing_front_soup advancing_front_soup(const Cas& cas)
 } // namespace Conformal_alpha_shapes_3
 } // namespace CGAL
 
-#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_ADVANCING_FRONT_FACETS_H
+#endif // CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_CGAL_FRONT_H
