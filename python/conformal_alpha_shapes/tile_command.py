@@ -34,9 +34,10 @@ def arguments(argv):
     engine.add_argument("--workers", type=int, metavar="W",
                         help="worker processes of the embedded cluster on 127.0.0.1 (default: one per core)")
     engine.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler (tcp:// or tls://)")
-    parser.add_argument("--tls-ca-file", help="TLS: the certificate authority's file (with --scheduler)")
-    parser.add_argument("--tls-cert", help="TLS: this client's certificate")
-    parser.add_argument("--tls-key", help="TLS: this client's private key")
+    parser.add_argument("--tls-ca-file", metavar="FILE",
+                        help="TLS: the certificate authority's file (with --scheduler tls://...)")
+    parser.add_argument("--tls-cert", metavar="FILE", help="TLS: this client's certificate")
+    parser.add_argument("--tls-key", metavar="FILE", help="TLS: this client's private key")
     parser.add_argument("--merge", action="store_true", help="also write DIR/curvatures.ply in input order")
     parser.add_argument("--alpha", default="auto", metavar="LIST", help="comma list of scales: auto and/or values")
     parser.add_argument("--radius", default=None, metavar="LIST",
@@ -51,7 +52,14 @@ def arguments(argv):
                         help="the halo's width in spacings (default: from the largest radius, see the manual)")
     parser.add_argument("--threads", type=int, default=1, help="threads per tile (default 1)")
     parser.add_argument("--quiet", action="store_true", help="no progress and no summary")
-    return parser.parse_args(argv)
+    args = parser.parse_args(argv)
+    # else Dask fails on connecting with a message that names no flag, or ignores the files
+    tls = (args.scheduler or "").startswith("tls://")
+    if tls and not (args.tls_ca_file and args.tls_cert and args.tls_key):
+        parser.error(f"the scheduler at {args.scheduler} needs --tls-ca-file, --tls-cert and --tls-key")
+    if not tls and (args.tls_ca_file or args.tls_cert or args.tls_key):
+        parser.error("--tls-ca-file, --tls-cert and --tls-key are for a --scheduler at a tls:// address")
+    return args
 
 
 def _split_list(text):
@@ -59,8 +67,8 @@ def _split_list(text):
 
 
 def security(args):
-    """The TLS settings of the client, with any of the TLS flags given (else None)."""
-    if not (args.tls_ca_file or args.tls_cert or args.tls_key):
+    """The TLS settings of the client, with the TLS flags given (else None)."""
+    if not args.tls_ca_file:
         return None
     from distributed.security import Security
     return Security(tls_ca_file=args.tls_ca_file, tls_client_cert=args.tls_cert,

@@ -171,38 +171,66 @@ def free_port():
         return s.getsockname()[1]
 
 
+def tls_files(folder):
+    """A throw-away certificate authority's file, and a certificate for
+    127.0.0.1 that it signed and its key, which the scheduler, the workers and
+    the client share."""
+    openssl = "/usr/bin/openssl"
+    if not os.access(openssl, os.X_OK):
+        pytest.fail(f"the TLS test needs {openssl} (Debian's package openssl)")
+    ca, ca_key, cert, key = (str(folder / name) for name in ("ca.pem", "ca.key", "cert.pem", "key.pem"))
+    new_key = ["req", "-x509", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes", "-days", "1"]
+    for signed in (["-keyout", ca_key, "-out", ca, "-subj", "/CN=throw-away CA"],
+                   ["-keyout", key, "-out", cert, "-subj", "/CN=127.0.0.1", "-CA", ca, "-CAkey", ca_key,
+                    "-addext", "subjectAltName=IP:127.0.0.1", "-addext", "basicConstraints=CA:FALSE"]):
+        made = subprocess.run([openssl, *new_key, *signed], capture_output=True, text=True)
+        assert made.returncode == 0, made.stderr
+    return ca, cert, key
+
+
 def test_scheduler_and_workers_on_localhost(tmp_path):
-    """Debian's dask-scheduler and dask-worker as separate processes, and the command line."""
+    """Debian's dask-scheduler and dask-worker as separate processes over TLS,
+    and the command line with the client's TLS files and without them."""
+    from distributed import Client
+    from distributed.security import Security
+    ca, cert, key = tls_files(tmp_path)
+    tls = ["--tls-ca-file", ca, "--tls-cert", cert, "--tls-key", key]
     port = free_port()
-    environment = dict(os.environ)
+    address = f"tls://127.0.0.1:{port}"
     services = []
     try:
-        services.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host",
-                                          "127.0.0.1", "--port", str(port), "--dashboard-address", ":0"],
-                                         env=environment, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE))
-        address = f"tcp://127.0.0.1:{port}"
-        for _ in range(2):
-            services.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address,
-                                              "--nthreads", "1", "--host", "127.0.0.1", "--no-dashboard"],
-                                             env=environment, stdout=subprocess.DEVNULL,
-                                             stderr=subprocess.DEVNULL))
-        from distributed import Client
+        # the services' messages go to a file, shown if they do not start (a pipe nobody reads could fill)
+        with open(tmp_path / "services.log", "w") as log:
+            services.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_scheduler", "--host",
+                                              "127.0.0.1", "--port", str(port), "--protocol", "tls",
+                                              "--dashboard-address", ":0", *tls], stdout=subprocess.DEVNULL,
+                                             stderr=log))
+            for _ in range(2):
+                services.append(subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", address,
+                                                  "--nthreads", "1", "--host", "127.0.0.1", "--no-dashboard", *tls],
+                                                 stdout=subprocess.DEVNULL, stderr=log))
+        security = Security(tls_ca_file=ca, tls_client_cert=cert, tls_client_key=key, require_encryption=True)
         deadline = time.monotonic() + 60
         while True:
             try:
-                with Client(address, timeout=5) as c:
+                with Client(address, security=security, timeout=5) as c:
                     c.wait_for_workers(2, timeout=30)
                 break
             except Exception as e:
                 if time.monotonic() > deadline or services[0].poll() is not None:
-                    pytest.fail(f"dask-scheduler and 2 dask-workers on {address} did not start: {e!r}")
+                    pytest.fail(f"dask-scheduler and 2 dask-workers on {address} did not start: {e!r}\n"
+                                + (tmp_path / "services.log").read_text()[-4000:])
                 time.sleep(0.5)
         points, _ = scene(12_000, seed=5)
         np.save(tmp_path / "small.npy", points)
-        run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / "small.npy"),
-                              "--output", str(tmp_path / "out"), "--tile-points", "6000", "--scheduler", address,
-                              "--merge", "--radius", "auto,4s"], env=environment, capture_output=True, text=True,
-                             timeout=300)
+        command = [sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / "small.npy"), "--output",
+                   str(tmp_path / "out"), "--tile-points", "6000", "--scheduler", address, "--merge",
+                   "--radius", "auto,4s"]
+        refused = subprocess.run(command, capture_output=True, text=True, timeout=60)
+        assert refused.returncode != 0
+        assert f"the scheduler at {address} needs --tls-ca-file, --tls-cert and --tls-key" in refused.stderr, \
+            refused.stderr
+        run = subprocess.run(command + tls, capture_output=True, text=True, timeout=300)
         assert run.returncode == 0, run.stderr
         assert "tiles" in run.stderr and "worst tile" in run.stderr
         summary = tile_io.read_manifest(tmp_path / "out" / "manifest.json")
