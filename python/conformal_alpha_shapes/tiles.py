@@ -219,6 +219,10 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
                "denoise_neighbors": denoise_neighbors, "extraction": extraction,
                "tile_points": int(tile_points), "halo": halo}
     _check_options(options)
+    if client is None and str(scheduler or "").startswith("tls://") and security is None:
+        # else Dask fails with a TypeError about an ssl_context
+        raise TileError(f"scheduler: {scheduler} needs security=distributed.security.Security(tls_ca_file=..., "
+                        "tls_client_cert=..., tls_client_key=...)")
     input = os.fspath(input)
     cloud = tile_io.open_cloud(input)
     started = time.monotonic()

@@ -177,23 +177,14 @@ Advancing_front_soup cgal_front_triangles(const Cas& cas)
   soup.triangles.reserve(tds.number_of_faces());
   soup.values.reserve(tds.number_of_faces());
   soup.shape_vertex.reserve(tds.number_of_vertices());
-  std::vector<std::size_t> soup_vertex(cas.number_of_vertices(), no_vertex);  // by shape vertex
+  std::vector<std::size_t> soup_vertex(cas.number_of_vertices(), Advancing_front_soup::no_neighbor);
   for(auto f = tds.faces_begin(); f != tds.faces_end(); ++f)
   {
     if(!f->is_on_surface())
       continue;
     std::array<std::size_t, 3> triangle;
     for(int k = 0; k < 3; ++k)
-    {
-      const std::size_t v = f->vertex(k)->vertex_3()->id();
-      std::size_t& s = soup_vertex[v];
-      if(s == no_vertex)
-      {
-        s = soup.shape_vertex.size();
-        soup.shape_vertex.push_back(v);
-      }
-      triangle[k] = s;
-    }
+      triangle[k] = soup_vertex_of(soup, soup_vertex, f->vertex(k)->vertex_3()->id());
     soup.triangles.push_back(triangle);
     soup.values.push_back(copied_facet_value(cas, f->facet().first->info().shape_cell, f->facet().second));
   }

@@ -947,20 +947,11 @@ public:
     const std::size_t no = std::size_t(-1);
     Advancing_front_soup soup;
     std::vector<std::pair<Cell_handle, int> > facets;
-    std::vector<std::size_t> soup_vertex(cas.number_of_vertices(), no);
+    std::vector<std::size_t> soup_vertex(cas.number_of_vertices(), Advancing_front_soup::no_neighbor);
     auto add = [&](Cell_handle c, int i) {
       std::array<std::size_t, 3> triangle;
       for(int k = 0; k < 3; ++k)
-      {
-        const std::size_t v = c->vertex((i + 1 + k) & 3)->vertex_index();
-        std::size_t& s = soup_vertex[v];
-        if(s == no)
-        {
-          s = soup.shape_vertex.size();
-          soup.shape_vertex.push_back(v);
-        }
-        triangle[k] = s;
-      }
+        triangle[k] = soup_vertex_of(soup, soup_vertex, c->vertex((i + 1 + k) & 3)->vertex_index());
       soup.triangles.push_back(triangle);
       facets.emplace_back(c, i);
     };

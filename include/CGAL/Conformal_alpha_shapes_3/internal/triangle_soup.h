@@ -39,6 +39,19 @@ struct Advancing_front_soup
   static constexpr std::size_t no_neighbor = std::size_t(-1);
 };
 
+// The soup vertex of the shape's vertex `v`, numbered when first met:
+// `soup_vertex` has an entry per shape vertex, `no_neighbor` until then.
+inline std::size_t soup_vertex_of(Advancing_front_soup& soup, std::vector<std::size_t>& soup_vertex, std::size_t v)
+{
+  std::size_t& s = soup_vertex[v];
+  if(s == Advancing_front_soup::no_neighbor)
+  {
+    s = soup.shape_vertex.size();
+    soup.shape_vertex.push_back(v);
+  }
+  return s;
+}
+
 // Sets the soup's neighbors from its triangles as CGAL's advancing-front
 // surface pairs its faces: the faces on an edge are paired in their order,
 // the first with the second, the third with the fourth, and a face left
