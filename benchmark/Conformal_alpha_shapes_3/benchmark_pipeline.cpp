@@ -22,8 +22,11 @@
 //   parts      the parts of the Multiscale_curvatures construction, called
 //              from outside the way its constructor calls them: input
 //              hygiene (internal::normalize_input), estimate_noise, denoise
-//              (when the plan calls for it), and the Conformal_alpha_shape_3
-//              of the (smoothed) points
+//              (when the plan calls for it), the Conformal_alpha_shape_3
+//              of the (smoothed) points, and its advancing front grown by
+//              CGAL's Advancing_front_surface_reconstruction (on a copy of
+//              the triangulation, internal/cgal_front.h) and by the
+//              package's own (internal/conformal_front.h), compared
 //   pipeline   the default job as conformal_curvature runs it:
 //              Multiscale_curvatures construction, alpha(Scale::automatic()),
 //              extract_surface, for each of default_neighborhoods()
@@ -52,6 +55,8 @@
 // peak is the largest stage peak. Children are killed after --time-limit
 // seconds (default: 900, or 300 microseconds per point where that is more,
 // since the whole job of 10,000,000 points took about 1,000 s).
+#include <CGAL/Conformal_alpha_shapes_3/internal/cgal_front.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/conformal_front.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
@@ -74,6 +79,7 @@
 #include "cas3_read_point_cloud.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <chrono>
@@ -411,6 +417,32 @@ void measure_parts(Child_meter& m, const Input& in)
     shape->make_conformal_alpha_shape(points.begin(), points.end(),
       CAS3::parameters::local_feature_size_estimator(CAS3::NOISE_ROBUST_POLE_DISTANCE));
     return std::to_string(shape->number_of_finite_cells()) + " finite cells";
+  });
+  // the soups are compared by a digest, so that neither is held while the other grows
+  auto digest = [](const CAS3::internal::Advancing_front_soup& soup) {
+    std::uint64_t h = 0;
+    for(const std::array<std::size_t, 3>& t : soup.triangles)
+      for(std::size_t v : t) h = CAS3::internal::mix_hash(h, soup.shape_vertex[v]);
+    for(const std::array<std::size_t, 3>& n : soup.neighbors)
+      for(std::size_t t : n) h = CAS3::internal::mix_hash(h, t);
+    for(double value : soup.values)
+    {
+      std::uint64_t bits;
+      std::memcpy(&bits, &value, sizeof bits);
+      h = CAS3::internal::mix_hash(h, bits);
+    }
+    return h;
+  };
+  std::uint64_t cgal_digest = 0;
+  m.stage("advancing front: CGAL's, on a copy of the triangulation", "part", [&] {
+    const CAS3::internal::Advancing_front_soup soup = CAS3::internal::cgal_front_soup(*shape);
+    cgal_digest = digest(soup);
+    return std::to_string(soup.triangles.size()) + " triangles";
+  });
+  m.stage("advancing front: the package's (the default)", "part", [&] {
+    const CAS3::internal::Advancing_front_soup soup = CAS3::internal::conformal_front_soup(*shape);
+    return std::to_string(soup.triangles.size()) + " triangles, "
+           + (digest(soup) == cgal_digest ? "the same soup as CGAL's" : "NOT the same soup as CGAL's");
   });
   m.stage("Delaunay_triangulation_3<Epick> (same points, same process)", "part", [&] {
     CGAL::Delaunay_triangulation_3<K> dt(points.begin(), points.end());

@@ -315,7 +315,7 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
             radius out of range, an unknown option, wrong shapes, only one of
             spacing and noise, a spacing not finite and > 0, a noise < 0 or NaN.
         TypeError: arrays that are not of real numbers, options of the wrong type.
-        KeyboardInterrupt: Ctrl-C (within a fraction of a second, the work unwound).
+        KeyboardInterrupt: Ctrl-C (within about a second, the work unwound).
     """
     arguments = _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors, extraction,
                                threads, progress, spacing, noise)
