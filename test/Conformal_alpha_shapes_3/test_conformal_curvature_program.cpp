@@ -550,8 +550,7 @@ BOOST_AUTO_TEST_CASE(extreme_input_gives_the_normalized_answer)
   BOOST_REQUIRE_EQUAL(run("crlf.xyz --alpha auto --rings 2 --output out_crlf --quiet --csv").exit_code, 0);
   BOOST_REQUIRE_EQUAL(run("clean.xyz --alpha auto --rings 2 --output out_lf --quiet --csv").exit_code, 0);
   // the same bytes: the same points, read from another file (another heap
-  // layout; the points are in general position, see the manual, "The
-  // Program")
+  // layout, which nothing depends on: the manual, "The Program")
   for(const char* file : {"curvatures.csv", "curvatures.ply", "surface_auto.ply"})
   {
     BOOST_TEST_INFO(file);
@@ -654,9 +653,7 @@ BOOST_AUTO_TEST_CASE(extreme_input_gives_the_normalized_answer)
 // on the bunny runs in bunny_default_run) only the smaller jobs, the noisy
 // cloud with 2,000 points. The first run has the program choose malloc's
 // huge pages (cas3_malloc_policy.h), the second keeps malloc's default: the
-// heap's addresses differ, the results may not (these points are in general
-// position: see the manual, "The Program", for the exact ties whose
-// order follows memory addresses).
+// heap's addresses differ, the results may not (the manual, "The Program").
 BOOST_AUTO_TEST_CASE(runs_are_deterministic)
 {
 #ifdef CAS3_SANITIZED
