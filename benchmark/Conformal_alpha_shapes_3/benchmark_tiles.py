@@ -87,6 +87,7 @@ def main():
     parser.add_argument("--no-one-run", action="store_true")
     args = parser.parse_args()
     folder = args.folder or tempfile.mkdtemp(prefix="benchmark_tiles_")
+    os.makedirs(folder, exist_ok=True)
     cloud = os.path.join(folder, "scene.npy")
     if args.input:
         from conformal_alpha_shapes import read_point_cloud
