@@ -117,7 +117,9 @@ private:
   struct Edge_facet
   {
     Cell_handle c{};
-    int i1 = 0, i2 = 0, i = 0;
+    std::int8_t i1 = 0, i2 = 0, i = 0;  // 16 bytes: the border's records hold 4
+    Edge_facet() = default;
+    Edge_facet(Cell_handle c, int i1, int i2, int i) : c(c), i1(std::int8_t(i1)), i2(std::int8_t(i2)), i(std::int8_t(i)) {}
     bool operator==(const Edge_facet& o) const { return c == o.c && i1 == o.i1 && i2 == o.i2 && i == o.i; }
     bool operator!=(const Edge_facet& o) const { return !(*this == o); }
   };
@@ -232,13 +234,6 @@ private:
       erase(heap.front());
       pop_heap();
     }
-    void swap(Key_set& o)
-    {
-      heap.swap(o.heap);
-      value.swap(o.value);
-      more.swap(o.more);
-      std::swap(size, o.size);
-    }
     // empties the set, in the time of its heap
     void clear()
     {
@@ -295,7 +290,7 @@ private:
   std::vector<Request> requests;
   Id free_request = none;
   std::vector<std::pair<Cell_handle, int> > selected;  // the facets taken, from the side taken
-  Key_set ordered_border, pass_keys;
+  Key_set ordered_border;
   // The border edges that re-evaluating would leave as they are ("asleep"):
   // keys (NOT_VALID_CANDIDATE, record) of the border kept out of
   // `ordered_border`, each watching the vertices it depends on (see
@@ -311,7 +306,7 @@ private:
   std::vector<Watch> watches;
   Id free_watch = none;
   const Key* pass_key = nullptr;             // the key re_compute_values() is at
-  Key_set* pass_output = nullptr;            // and its re-evaluated keys
+  std::vector<Key>* pass_output = nullptr;   // and its re-evaluated keys
   int number_of_components = 0;
   int number_of_selected = 0;
 
@@ -530,7 +525,7 @@ private:
     --number_asleep;
     const Key key(NOT_VALID_CANDIDATE, r);
     if(pass_key != nullptr && key < *pass_key)
-      pass_output->insert(key);
+      pass_output->push_back(key);
     else
       ordered_border.insert(key);
   }
@@ -1064,8 +1059,7 @@ private:
   // would be left as they are: they stay asleep).
   void re_compute_values()
   {
-    Key_set& recomputed = pass_keys;  // empty between passes
-    std::vector<Id> not_valid;  // the records of the keys (NOT_VALID_CANDIDATE, record) recomputed
+    std::vector<Key> recomputed;
     pass_output = &recomputed;
     while(!ordered_border.empty())
     {
@@ -1082,24 +1076,19 @@ private:
       is_border_elt(key, result);
       const Id pnew = set_again_border_elt(key.first, key.second, Border_elt{new_candidate, result.border});
       if(pnew != none)
-      {
-        recomputed.insert(Key(new_candidate.value, pnew));
-        if(new_candidate.value == NOT_VALID_CANDIDATE)
-          not_valid.push_back(pnew);
-      }
+        recomputed.push_back(Key(new_candidate.value, pnew));
     }
     pass_key = nullptr;
     pass_output = nullptr;
-    // a record written twice in the pass keeps both keys: its last write
-    // decides
-    for(const Id r : not_valid)
-      if(!asleep[r] && records[r].elt.candidate.value == NOT_VALID_CANDIDATE)
-      {
-        recomputed.erase(Key(NOT_VALID_CANDIDATE, r));
-        put_to_sleep(r);
-      }
-    ordered_border.swap(recomputed);
-    recomputed.clear();
+    // the keys recomputed are the border again, but for the records left
+    // "not valid" by their last write (one may be written twice in the
+    // pass), which go to sleep
+    ordered_border.clear();
+    for(const Key& k : recomputed)
+      if(k.first != NOT_VALID_CANDIDATE || records[k.second].elt.candidate.value != NOT_VALID_CANDIDATE)
+        ordered_border.insert(k);
+      else if(!asleep[k.second])
+        put_to_sleep(k.second);
   }
 
   void extend()
@@ -1183,7 +1172,6 @@ public:
     request_tail.assign(n, none);
     asleep.assign(2 * n, 0);
     ordered_border.reset(2 * n);
-    pass_keys.reset(2 * n);
     watch_head.assign(n, none);
 
     K = 5;
