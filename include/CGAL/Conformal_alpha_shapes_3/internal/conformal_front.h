@@ -1136,6 +1136,12 @@ private:
     } while(!border_is_empty() && K <= K && min_K != infinity && K != K_prev);
   }
 
+  template <class... Vectors>
+  static void release(Vectors&... v)
+  {
+    (Vectors().swap(v), ...);
+  }
+
   const Point& vertex_point(Id v) const { return vertex_by_rank[v]->point(); }
   std::vector<Vertex_handle> vertex_by_rank;
 
@@ -1192,6 +1198,11 @@ public:
               erase_incidence_request(Id(r));
       }
     } while(re_init);
+    // the growth's state, that surface() does not read, freed before the
+    // memory peak that surface() makes
+    release(mark, first_record, second_record, records, interior_head, interiors, request_head, request_tail,
+            requests, asleep, watch_head, watches, seeds, cells_by_index, vertex_by_rank);
+    ordered_border = Key_set();
   }
 
   // The selected facets as CGAL's advancing front leaves them: its faces
