@@ -68,17 +68,14 @@
 // copy of the triangulation, no 2D structure), the surface's faces
 // (sorted from the facets taken, not found by a walk over all facets) and
 // the re-evaluations of every border edge each time a part runs out of
-// valid candidates. Where the front leaves many holes CGAL spends most of
-// its time there (at 1,000,000 points of an ellipsoid 1 : 0.8 : 0.6 with a
-// normal noise of 0.002: 18 parts, 173 re-evaluations of 119,000 edges on
-// average, 99.9% of them "not valid" and left so). Here an edge keeps its
-// search for its best facet, that holds while that facet may still be
+// valid candidates, where CGAL spends most of its time when the front
+// leaves many holes, nearly all of them re-evaluating edges that stay "not
+// valid" (the manual, "Performance", has the figures). Here an edge keeps
+// its search for its best facet, that holds while that facet may still be
 // taken, and only classifies it again for the new K
 // (`re_compute_value()`); the edges left "not valid" sleep out of the
 // border's order until something they depend on changes
 // (`put_to_sleep()`); and the border's ordered set is a heap (`Key_set`).
-// On that cloud the front takes 9.4 s instead of 41.7 s, and 11.6 s
-// instead of 22.1 s with a noise of 0.0005 (on a shared 2-core machine).
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/front_priority.h>
