@@ -12,18 +12,27 @@ CHUNK = 1 << 20
 COMPONENT_CELL_SPACINGS = 3.0
 
 
-def split(sample, tiles, first):
+def split(sample, tiles, first, band):
     """A tree of cuts over ``sample``: a leaf is a tile number, a node
-    ``[axis, cut, left, right]`` sends points below ``cut`` left; the median
-    split on the longest axis, at the share of the tiles on each side."""
+    ``[axis, cut, left, right]`` sends points below ``cut`` left. Each cut is
+    at the share of the tiles on each side, on the axis whose cut has the
+    fewest points within ``band`` of it (the halo it adds; ties: the longest
+    axis): a cut along a sheet, such as the ground under a horizontal cut,
+    would put the whole sheet in the halos."""
     if tiles == 1:
         return first
-    extent = sample.max(axis=0) - sample.min(axis=0)
-    axis = int(np.argmax(extent))
     left = tiles // 2
-    cut = float(np.quantile(sample[:, axis], left / tiles))
+    extent = sample.max(axis=0) - sample.min(axis=0)
+    best = None
+    for axis in range(3):
+        cut = float(np.quantile(sample[:, axis], left / tiles))
+        crossing = int(np.count_nonzero(np.abs(sample[:, axis] - cut) < band))
+        if best is None or (crossing, -extent[axis]) < best[0]:
+            best = ((crossing, -extent[axis]), axis, cut)
+    _, axis, cut = best
     below = sample[:, axis] < cut
-    return [axis, cut, split(sample[below], left, first), split(sample[~below], tiles - left, first + left)]
+    return [axis, cut, split(sample[below], left, first, band),
+            split(sample[~below], tiles - left, first + left, band)]
 
 
 def _assign(tree, points, margin, index=None, out=None):

@@ -272,7 +272,8 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         sample = np.concatenate([p[(-start) % stride::stride]
                                  for start, p, _ in cloud.chunks(tile_partition.CHUNK)])
         tiles = max(1, math.ceil(cloud.count / options["tile_points"]))
-        tree = tile_partition.split(sample, tiles, 0)
+        band = _sample_halo(sample, stride, options) if tiles > 1 else 0.0
+        tree = tile_partition.split(sample, tiles, 0, band)
         core = tile_partition.write_tile_files(cloud, tree, tiles, output, 0.0, "core")
         total = np.zeros(3)
         for _, p, _ in cloud.chunks(tile_partition.CHUNK):
@@ -299,6 +300,15 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         tile_partition.write_tile_files(cloud, tree, tiles, output, halo * manifest["spacing"], "halo")
         manifest.update(halo_spacings=halo)
         save()
+
+
+def _sample_halo(sample, stride, options):
+    """The halo's width as the partition foresees it: the rule's width in the
+    spacing of the points, from the sample's spacing (every ``stride``-th
+    point of a surface: ``sqrt(stride)`` times the points')."""
+    from . import estimate_noise
+    spacing = estimate_noise(sample).spacing / math.sqrt(stride)
+    return (options["halo"] or halo_spacings(options["radii"], options["rings"], spacing)) * spacing
 
 
 def _global_noise(client, cloud, output, tiles, quiet):

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import conformal_alpha_shapes as cas
-from conformal_alpha_shapes import tile_io, tiles
+from conformal_alpha_shapes import tile_io, tile_partition, tiles
 
 from conftest import fibonacci_sphere
 
@@ -137,6 +137,23 @@ def test_seams_agree_and_closed_parts_point_outward(scene_run):
     sheet = on & (label == 1)
     up = np.mean(normal[sheet, 2] > 0)
     assert max(up, 1 - up) >= 0.99
+
+
+def test_the_cuts_cross_sheets_rather_than_follow_them():
+    """The scene's far outliers make its vertical extent the longest, and a
+    horizontal cut at the median height runs along the wavy ground: the cuts
+    are where their bands hold the fewest points."""
+    points, label = scene(60_000)
+    band = 0.1
+    tree = tile_partition.split(points, 4, 0, band)
+    cores = tile_partition._assign(tree, points, 0.0)
+    halos = tile_partition._assign(tree, points, band)
+    assert sorted(np.concatenate(list(cores.values()))) == list(range(len(points)))
+    added = sum(len(halos[t]) - len(cores[t]) for t in cores) / len(points)
+    # a vertical cut through the 4 x 4 ground and the ellipsoid adds about
+    # 2 band / 4 of each per cut (three cuts); a horizontal one most of the ground
+    assert added < 0.2, f"the halos add {added:.0%} of the points: a cut runs along a sheet"
+    assert min(len(c) for c in cores.values()) > 0.2 * len(points)
 
 
 def test_an_open_sheet_across_many_tiles(client, tmp_path):
