@@ -101,13 +101,29 @@ def tile_noise_neighbors(folder, tile, has_normals, center, exponent, sample, ne
     of each of its ``sample`` indices, ties included: (indices, normalized points)."""
     index, points, _ = _kept_points(folder, tile, has_normals, False)
     q = _normalized(points, center, exponent)
-    rows = np.searchsorted(index, sample)
+    k = min(neighbors, len(q) - 1)
+    by_x = np.argsort(q[:, 0], kind="stable")
+    xs = q[by_x, 0]
+    extent = float((q.max(axis=0) - q.min(axis=0)).max()) if len(q) else 0.0
+    # half the side of a cube that holds about 2k points of a surface
+    start = extent * np.sqrt(2 * (k + 1) / max(len(q), 1))
     chosen = []
-    for row in rows:
-        distance = ((q - q[row]) ** 2).sum(axis=1)
-        k = min(neighbors, len(q) - 1)
-        limit = np.partition(distance, k)[k]
-        chosen.append(np.flatnonzero(distance <= limit * (1 + 1e-9)))
+    for row in np.searchsorted(index, sample):
+        half = start
+        while True:
+            # the points of the cube of side 2 half around the sample point,
+            # from the slab of its x; enough when the k-th nearest distance
+            # (ties included) is inside it, or when it holds the whole tile
+            slab = by_x[np.searchsorted(xs, q[row, 0] - half):np.searchsorted(xs, q[row, 0] + half, side="right")]
+            inside = slab[(np.abs(q[slab, 1:] - q[row, 1:]) <= half).all(axis=1)]
+            whole = half >= extent
+            if len(inside) > k or whole:
+                distance = ((q[inside] - q[row]) ** 2).sum(axis=1)
+                limit = np.partition(distance, k)[k] * (1 + 1e-9)
+                if whole or limit <= half * half:
+                    chosen.append(inside[distance <= limit])
+                    break
+            half *= 2
     chosen = np.unique(np.concatenate(chosen)) if chosen else np.empty(0, np.int64)
     return index[chosen], q[chosen]
 
