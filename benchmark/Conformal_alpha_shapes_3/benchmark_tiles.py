@@ -115,8 +115,10 @@ def main():
                                       for name in names)}
     if not args.no_one_run:
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        # the program's allocator policy, as the tiles' workers have it
+        from conformal_alpha_shapes.tiles import WORKER_MALLOC_POLICY
         run = subprocess.run([sys.executable, "-c", ONE_RUN, cloud, os.path.join(folder, "one.npz")],
-                             check=True, capture_output=True, text=True)
+                             check=True, capture_output=True, text=True, env=dict(os.environ, **WORKER_MALLOC_POLICY))
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         one = json.loads(run.stdout)
         one["process_cpu"] = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)

@@ -156,6 +156,18 @@ def test_the_cuts_cross_sheets_rather_than_follow_them():
     assert min(len(c) for c in cores.values()) > 0.2 * len(points)
 
 
+def test_the_embedded_cluster_has_the_programs_malloc_policy():
+    """Its workers start with the allocator settings the program gives itself."""
+    client, cluster = tiles._start_client(1, None, None)
+    try:
+        seen = client.run(lambda: {k: os.environ.get(k) for k in tiles.WORKER_MALLOC_POLICY})
+    finally:
+        client.close()
+        cluster.close()
+    expected = {k: os.environ.get(k, v) for k, v in tiles.WORKER_MALLOC_POLICY.items()}
+    assert list(seen.values()) == [expected]
+
+
 def test_an_open_sheet_across_many_tiles(client, tmp_path):
     rng = np.random.default_rng(3)
     side = 180
