@@ -130,7 +130,12 @@ public:
     std::vector<Neighbor> neighbors;
     std::vector<Radius_fit> fits;  // by radius
     std::vector<Candidate_fit> candidates;
-    std::vector<std::pair<const Center_fit*, Vec3> > around;  // centers around the vertex
+    // the centers around the vertex: where, whether fitted at the
+    // current radius and at the previous one, their fits, their weights
+    std::vector<Vec3> around;
+    std::vector<char> defined, defined_before;
+    std::vector<const Center_fit*> around_fits;
+    Center_weights weights;
   };
 
   // `normals`: the Chen-Wu normal of each vertex of `graph`. With
@@ -306,23 +311,32 @@ private:
     out.defined = ok && std::isfinite(out.curvature.k1) && std::isfinite(out.curvature.k2);
   }
 
-  // The fits at the large radii interpolated from the centers around v.
+  // The fits at the large radii interpolated from the centers around v;
+  // the weights are computed again only where the centers with a fit change.
   void interpolate_large_radii(std::size_t v, Workspace& ws) const
   {
     const std::size_t large = m_radii.size() - m_fine_levels;
     const std::size_t own = m_centers->center_of[v];
+    ws.around.clear();
+    ws.around.push_back(m_graph.points[m_centers->vertex[own]]);
+    for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
+      ws.around.push_back(m_graph.points[m_centers->vertex[m_centers->adjacent[e]]]);
+    bool weighted = false;
     for(std::size_t j = 0; j < large; ++j)
     {
-      ws.around.clear();
-      ws.around.emplace_back(&m_center_fits[own * large + j], m_graph.points[m_centers->vertex[own]]);
+      ws.around_fits.clear();
+      ws.defined.clear();
+      ws.around_fits.push_back(&m_center_fits[own * large + j]);
       for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
-      {
-        const std::size_t c = m_centers->adjacent[e];
-        ws.around.emplace_back(&m_center_fits[c * large + j], m_graph.points[m_centers->vertex[c]]);
-      }
+        ws.around_fits.push_back(&m_center_fits[m_centers->adjacent[e] * large + j]);
+      for(const Center_fit* fit : ws.around_fits)
+        ws.defined.push_back(fit->defined ? 1 : 0);
+      if(j == 0 || ws.defined != ws.defined_before)
+        weighted = ws.weights.compute(m_graph.points[v], m_normals[v], ws.around, ws.defined, m_center_reach);
+      std::swap(ws.defined, ws.defined_before);
       Radius_fit& out = ws.fits[m_fine_levels + j];
-      out.defined = interpolate_center_fits(m_graph.points[v], m_normals[v], ws.around, m_center_reach,
-                                            out.curvature, out.error);
+      out.defined = weighted && interpolate_center_fits(m_normals[v], ws.around_fits, ws.weights, out.curvature,
+                                                        out.error);
     }
   }
 

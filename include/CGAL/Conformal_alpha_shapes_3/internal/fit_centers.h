@@ -125,83 +125,108 @@ struct Center_fit
 };
 
 // The curvature at a vertex (at p, normal n) from the fits of the centers
-// around it (`around`, each with its position), interpolated by a weighted
-// linear least-squares fit in the vertex's tangent plane: exact for values
-// that vary linearly along the surface, so that the vertex does not take
-// the curvature of a center a sixth of a radius away. With fewer than
-// four defined centers, centers nearly on a line, or weights that
-// extrapolate (their absolute values summing to more than 3: the vertex
-// outside its centers, at a border), the weighted mean. A center seen
-// from the other side (its normal against n: a thin part, a sheet close
-// to itself) counts with its normal and shape operator negated, which
-// describe the same surface. The uncertainty is always the weighted mean.
-// `reach` sets the weights (1 - d^2 / reach^2)^2, with a floor so that
-// every center around counts a little; false when no center around has a
-// defined fit or the interpolated normal does not face n's side.
-inline bool interpolate_center_fits(const Vec3& p, const Vec3& n,
-                                    const std::vector<std::pair<const Center_fit*, Vec3> >& around,
-                                    double reach, Local_curvature& out, Quadric_fit_error& error)
+// around it, interpolated by a weighted linear least-squares fit in the
+// vertex's tangent plane: exact for values that vary linearly along the
+// surface, so that the vertex does not take the curvature of a center a
+// sixth of a radius away. With fewer than four defined centers, centers
+// nearly on a line, or weights that extrapolate (their absolute values
+// summing to more than 3: the vertex outside its centers, at a border),
+// the weighted mean. A center seen from the other side (its normal
+// against n: a thin part, a sheet close to itself) counts with its normal
+// and shape operator negated, which describe the same surface. The
+// uncertainty is always the weighted mean. `reach` sets the weights
+// (1 - d^2 / reach^2)^2, with a floor so that every center around counts
+// a little. The weights depend only on where the centers are and which of
+// them have a fit: `Center_weights` computes them once for all the radii
+// of a set of centers whose fits are defined at the same centers.
+struct Center_weights
 {
-  const Tangent_frame f = frame_from_normal(n);
-  // a center's weight and its row (1, x, y) in the vertex's tangent plane
-  auto weight_and_row = [&](const Vec3& center, Eigen::Vector3d& phi) {
-    const Vec3 o = (center - p) / reach;
-    phi = Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2));
-    const double u = (std::max)(0., 1 - o.squaredNorm());
-    return u * u + 1e-6;
-  };
-  Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d phi;
-  double total = 0;
-  std::size_t count = 0;
-  for(const auto& a : around)
+  std::vector<double> interpolating, mean;  // by center around; 0 where not defined
+
+  // false when no center has a defined fit
+  bool compute(const Vec3& p, const Vec3& n, const std::vector<Vec3>& centers, const std::vector<char>& defined,
+               double reach)
   {
-    if(!a.first->defined)
-      continue;
-    const double w = weight_and_row(a.second, phi);
-    moments += w * phi * phi.transpose();
-    total += w;
-    ++count;
-  }
-  if(count == 0)
-    return false;
-  // weight of center i in the interpolated value: w_i e0' M^-1 phi_i
-  Eigen::Vector3d solution = Eigen::Vector3d::Zero();
-  bool linear = false;
-  if(count >= 4)
-  {
-    const Eigen::LDLT<Eigen::Matrix3d> ldlt(moments);
-    const auto pivots = ldlt.vectorD();
-    linear = ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-3 * pivots.maxCoeff();
-    if(linear)
+    const Tangent_frame f = frame_from_normal(n);
+    // a center's weight and its row (1, x, y) in the vertex's tangent plane
+    auto weight_and_row = [&](const Vec3& center, Eigen::Vector3d& phi) {
+      const Vec3 o = (center - p) / reach;
+      phi = Eigen::Vector3d(1, o.dot(f.e1), o.dot(f.e2));
+      const double u = (std::max)(0., 1 - o.squaredNorm());
+      return u * u + 1e-6;
+    };
+    Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d phi;
+    double total = 0;
+    std::size_t count = 0;
+    for(std::size_t i = 0; i < centers.size(); ++i)
     {
-      solution = ldlt.solve(Eigen::Vector3d(1, 0, 0));
-      double spread = 0;
-      for(const auto& a : around)
-        if(a.first->defined)
-        {
-          const double w = weight_and_row(a.second, phi);
-          spread += std::abs(w * solution.dot(phi));
-        }
-      linear = spread <= 3;
+      if(!defined[i])
+        continue;
+      const double w = weight_and_row(centers[i], phi);
+      moments += w * phi * phi.transpose();
+      total += w;
+      ++count;
     }
+    if(count == 0)
+      return false;
+    // weight of center i in the interpolated value: w_i e0' M^-1 phi_i
+    Eigen::Vector3d solution = Eigen::Vector3d::Zero();
+    bool linear = false;
+    if(count >= 4)
+    {
+      const Eigen::LDLT<Eigen::Matrix3d> ldlt(moments);
+      const auto pivots = ldlt.vectorD();
+      linear = ldlt.info() == Eigen::Success && pivots.minCoeff() > 1e-3 * pivots.maxCoeff();
+      if(linear)
+      {
+        solution = ldlt.solve(Eigen::Vector3d(1, 0, 0));
+        double spread = 0;
+        for(std::size_t i = 0; i < centers.size(); ++i)
+          if(defined[i])
+          {
+            const double w = weight_and_row(centers[i], phi);
+            spread += std::abs(w * solution.dot(phi));
+          }
+        linear = spread <= 3;
+      }
+    }
+    interpolating.assign(centers.size(), 0.);
+    mean.assign(centers.size(), 0.);
+    for(std::size_t i = 0; i < centers.size(); ++i)
+    {
+      if(!defined[i])
+        continue;
+      const double w = weight_and_row(centers[i], phi);
+      interpolating[i] = linear ? w * solution.dot(phi) : w / total;
+      mean[i] = w / total;
+    }
+    return true;
   }
+};
+
+// The interpolated curvature at a vertex of normal n from `fits`, the
+// centers' fits in the order of `weights`; false when the interpolated
+// normal does not face n's side.
+inline bool interpolate_center_fits(const Vec3& n, const std::vector<const Center_fit*>& fits,
+                                    const Center_weights& weights, Local_curvature& out, Quadric_fit_error& error)
+{
   Eigen::Matrix3d shape = Eigen::Matrix3d::Zero();
   Vec3 normal = Vec3::Zero();
   error = Quadric_fit_error();
-  for(const auto& a : around)
+  for(std::size_t i = 0; i < fits.size(); ++i)
   {
-    if(!a.first->defined)
+    const Center_fit& c = *fits[i];
+    if(!c.defined)
       continue;
-    const double w = weight_and_row(a.second, phi);
-    const double lambda = linear ? w * solution.dot(phi) : w / total;
-    const double side = a.first->normal.dot(n) < 0 ? -1. : 1.;
-    shape += (side * lambda) * a.first->shape;
-    normal += (side * lambda) * a.first->normal;
-    const double mean = w / total;
-    error.noise += mean * a.first->error.noise;
-    error.degrees_of_freedom += mean * a.first->error.degrees_of_freedom;
-    error.per_noise += mean * a.first->error.per_noise;
+    const double lambda = weights.interpolating[i];
+    const double side = c.normal.dot(n) < 0 ? -1. : 1.;
+    shape += (side * lambda) * c.shape;
+    normal += (side * lambda) * c.normal;
+    const double mean = weights.mean[i];
+    error.noise += mean * c.error.noise;
+    error.degrees_of_freedom += mean * c.error.degrees_of_freedom;
+    error.per_noise += mean * c.error.per_noise;
   }
   if(!(normal.dot(n) > 0))
     return false;
