@@ -336,24 +336,24 @@ public:
         const CAS3::Surface_report report = analysis.surface(a, surface);
         cas3::return_freed_memory();  // as the program does: the front's copy was freed mid-heap
         step("curvature at scale " + cas3::scale_text(scale));
-        std::vector<std::vector<CAS3::Point_curvature<K> > > values =
-          analysis.estimate_curvatures(surface, o.neighborhoods, o.estimator);
-        for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
-        {
-          const std::string label = cas3::layer_label(scale, o.neighborhoods[r], scales.size() > 1);
-          {
-            py::gil_scoped_acquire gil;
-            py::dict layer = layer_arrays(values[r]);
-            layer["name"] = label;
-            layer["a"] = a;
-            layer["description"] = cas3::layer_description(analysis, a, scale, o.neighborhoods[r], label);
-            layer["surface"] = report_dict(report);
-            layers.append(layer);
-          }
-          std::vector<CAS3::Point_curvature<K> >().swap(values[r]);
-          if(r + 1 < o.neighborhoods.size())
-            step("curvature at scale " + cas3::scale_text(scale));
-        }
+        // each layer becomes its arrays as soon as it is made: the point
+        // layers' values are never all held at once
+        analysis.estimate_curvatures(
+          surface, o.neighborhoods, o.estimator,
+          [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& values) {
+            const std::string label = cas3::layer_label(scale, o.neighborhoods[r], scales.size() > 1);
+            {
+              py::gil_scoped_acquire gil;
+              py::dict layer = layer_arrays(values);
+              layer["name"] = label;
+              layer["a"] = a;
+              layer["description"] = cas3::layer_description(analysis, a, scale, o.neighborhoods[r], label);
+              layer["surface"] = report_dict(report);
+              layers.append(layer);
+            }
+            if(r + 1 < o.neighborhoods.size())
+              step("curvature at scale " + cas3::scale_text(scale));
+          });
       }
       checkpoint("done", 1.0);
       return 0;

@@ -29,10 +29,12 @@
 //              package's own (internal/conformal_front.h), compared
 //   pipeline   the default job as conformal_curvature runs it:
 //              Multiscale_curvatures construction, alpha(Scale::automatic()),
-//              extract_surface, for each of default_neighborhoods()
-//              estimate_curvatures (the fits and the nearest-surface
-//              filling) and the program's layer with its summary statistics,
-//              the surface PLY with the layers, and the binary PLY point
+//              extract_surface, estimate_curvatures for
+//              default_neighborhoods() (the fits and the nearest-surface
+//              filling), each layer made the program's, in float with its
+//              summary statistics, as estimate_curvatures gives it (one
+//              stage, as in the program: the layers in double are never
+//              all held), the surface PLY with the layers, and the binary PLY point
 //              cloud, through the program's code (cas3_curvature_output.h,
 //              cas3_curvature_summary.h, cas3_layer_names.h;
 //              reading an input file is not timed). The curvature of all
@@ -482,23 +484,21 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
   });
   std::vector<cas3::Layer> layers;
   const std::vector<CAS3::Neighborhood> neighborhoods = CAS3::default_neighborhoods();
-  std::vector<std::vector<CAS3::Point_curvature<K> > > curvatures;
-  m.stage("estimate_curvatures (" + std::to_string(neighborhoods.size()) + " neighborhoods)", "stage", [&] {
-    curvatures = analysis->estimate_curvatures(surface, neighborhoods, CAS3::QUADRIC_FIT);
-    return std::string();
+  m.stage("estimate_curvatures (" + std::to_string(neighborhoods.size())
+            + " neighborhoods), each layer made the program's (float, summary) as it comes", "stage", [&] {
+    std::string summaries;
+    analysis->estimate_curvatures(
+      surface, neighborhoods, CAS3::QUADRIC_FIT,
+      [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& curvatures) {
+        const CAS3::Neighborhood& neighborhood = neighborhoods[r];
+        cas3::Layer layer(curvatures);
+        layer.label = cas3::layer_label(scale, neighborhood, false);
+        layer.description = cas3::layer_description(*analysis, a, scale, neighborhood, layer.label);
+        summaries += (summaries.empty() ? "" : "; ") + cas3::summary_row(layer.label, a, curvatures);
+        layers.push_back(std::move(layer));
+      });
+    return summaries;
   });
-  for(std::size_t r = 0; r < neighborhoods.size(); ++r)
-  {
-    const CAS3::Neighborhood& neighborhood = neighborhoods[r];
-    const std::string label = cas3::layer_label(scale, neighborhood, false);
-    m.stage("program: layer " + label + " (values in float, summary)", "stage", [&] {
-      cas3::Layer layer(curvatures[r]);
-      layer.label = label;
-      layer.description = cas3::layer_description(*analysis, a, scale, neighborhood, label);
-      layers.push_back(std::move(layer));
-      return cas3::summary_row(label, a, curvatures[r]);
-    });
-  }
   m.stage("write surface PLY (binary, 5 layers, colors)", "stage", [&] {
     std::ofstream ply(dir / "surface_auto.ply", std::ios::binary);
     cas3::write_surface(ply, surface, points, layers.data(), layers.data() + layers.size());

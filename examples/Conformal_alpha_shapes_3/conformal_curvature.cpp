@@ -104,27 +104,24 @@ int run(const cas3::Curvature_options& o)
     progress("scale " + cas3::scale_text(scale) + ": surface of " + std::to_string(report.number_of_faces) + " faces");
     summary << cas3::summary_scale_line(cas3::scale_text(scale), report);
     cas3::return_freed_memory();
-    std::vector<std::vector<CAS3::Point_curvature<K> > > by_neighborhood =
-      analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator);
-    for(std::size_t r = 0; r < o.neighborhoods.size(); ++r)
-    {
-      const CAS3::Neighborhood& neighborhood = o.neighborhoods[r];
-      const std::vector<CAS3::Point_curvature<K> >& curvatures = by_neighborhood[r];
-      cas3::Layer layer(curvatures);
-      layer.label = cas3::layer_label(scale, neighborhood, o.scales.size() > 1);
-      layer.description = cas3::layer_description(*analysis, a, scale, neighborhood, layer.label);
-      if(o.csv)
-      {
-        cas3::append_csv_rows(csv, points, a, neighborhood, curvatures, is_outlier);
-        output.check(csv);
-      }
-      summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
-      progress("layer " + layer.label + ": curvature estimated");
-      layers.push_back(std::move(layer));
-      // the layer keeps its values as floats: the doubles go now rather
-      // than after the last layer
-      std::vector<CAS3::Point_curvature<K> >().swap(by_neighborhood[r]);
-    }
+    // each layer is kept in float as soon as it is made: its values in
+    // double are never all held at once
+    analysis->estimate_curvatures(
+      surface, o.neighborhoods, o.estimator,
+      [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& curvatures) {
+        const CAS3::Neighborhood& neighborhood = o.neighborhoods[r];
+        cas3::Layer layer(curvatures);
+        layer.label = cas3::layer_label(scale, neighborhood, o.scales.size() > 1);
+        layer.description = cas3::layer_description(*analysis, a, scale, neighborhood, layer.label);
+        if(o.csv)
+        {
+          cas3::append_csv_rows(csv, points, a, neighborhood, curvatures, is_outlier);
+          output.check(csv);
+        }
+        summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
+        progress("layer " + layer.label + ": curvature estimated");
+        layers.push_back(std::move(layer));
+      });
     if(!cloud.normals.empty())
       summary << cas3::summary_normals_line(cas3::scale_text(scale), surface, cloud.normals);
     std::ofstream ply = output.open("surface_" + cas3::scale_label(scale) + ".ply", true);

@@ -319,6 +319,42 @@ std::vector<std::vector<CAS3::Point_curvature<K> > > default_layers(const Analys
 // Whether two doubles have the same bits (NaN equals NaN).
 bool same_double(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
 
+// The overload giving each layer as it is made gives the returned layers,
+// in their order, and leaves the same surface properties (the last layer's).
+BOOST_AUTO_TEST_CASE(layers_given_as_they_are_made)
+{
+  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 0.7, 0.4);
+  cas3_analytic::add_normal_noise(s, 0.1, 3);
+  s.points.push_back(Point(40, 0, 0));  // an outlier: NO_VALUE in every layer
+  const Analysis analysis(s.points.begin(), s.points.end());
+  BOOST_TEST(analysis.outliers().size() == 1u);
+  const std::vector<CAS3::Neighborhood> neighborhoods{CAS3::Neighborhood::automatic(), CAS3::Neighborhood::spacings(4),
+                                                      CAS3::Neighborhood::rings(2)};
+  const double a = analysis.scale_value(CAS3::Scale::automatic());
+  Analysis::Surface returned_surface, given_surface;
+  analysis.surface(a, returned_surface);
+  analysis.surface(a, given_surface);
+  const auto returned = analysis.estimate_curvatures(returned_surface, neighborhoods);
+  std::size_t next = 0;
+  analysis.estimate_curvatures(given_surface, neighborhoods, CAS3::QUADRIC_FIT,
+                               [&](std::size_t k, std::vector<CAS3::Point_curvature<K> >&& layer) {
+                                 BOOST_TEST(k == next++);
+                                 BOOST_REQUIRE(layer.size() == s.points.size());
+                                 std::size_t differing = 0;
+                                 for(std::size_t i = 0; i < layer.size(); ++i)
+                                   differing += same_bits(layer[i], returned[k][i]) ? 0 : 1;
+                                 BOOST_TEST(differing == 0u);
+                                 BOOST_TEST(layer.back().source == CAS3::NO_VALUE);
+                               });
+  BOOST_TEST(next == neighborhoods.size());
+  const auto returned_h = returned_surface.property_map<Analysis::Surface_vertex, double>("v:mean_curvature").first;
+  const auto given_h = given_surface.property_map<Analysis::Surface_vertex, double>("v:mean_curvature").first;
+  std::size_t differing = 0;
+  for(Analysis::Surface_vertex v : given_surface.vertices())
+    differing += same_double(returned_h[v], given_h[v]) ? 0 : 1;
+  BOOST_TEST(differing == 0u);
+}
+
 // The noise_estimate of a larger run (issue 37: tiles take the whole
 // cloud's decisions): given a run's own noise(), a run on the same points,
 // far from the unit size so that the working frame rescales them, gives the

@@ -304,11 +304,39 @@ public:
   neighborhood, in their order, by input index; outliers get `NO_VALUE`.
   The surface's properties (see the class description) hold the last
   neighborhood's values. With TBB (`CGAL_LINKED_WITH_TBB`) the vertices
-  and points run on its threads, with the same results.
+  and points run on its threads, with the same results. All layers are
+  held at once: the overload with a `layer_done` function object gives
+  each as soon as it is made.
   */
   std::vector<std::vector<Point_curvature<Kernel> > >
   estimate_curvatures(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
                       Curvature_estimator estimator = QUADRIC_FIT) const
+  {
+    std::vector<std::vector<Point_curvature<Kernel> > > layers(neighborhoods.size());
+    estimate_curvatures(surface, neighborhoods, estimator,
+                        [&](std::size_t k, std::vector<Point_curvature<Kernel> >&& values) {
+                          layers[k] = std::move(values);
+                        });
+    return layers;
+  }
+
+  /*!
+  The same estimate, each neighborhood's result given to `layer_done` as
+  soon as it is made, in their order, rather than all returned at the end:
+  `layer_done(k, values)` receives the index `k` of the neighborhood and its
+  values by input index, as an rvalue that it may keep (moved out) or let
+  go. This function holds one such layer at a time, besides the vertex
+  values of the neighborhoods not yet given to the points, so that a caller
+  that keeps each layer in a smaller form (or writes it out) never holds
+  them all in double.
+
+  \tparam LayerDone a function object callable as
+          `layer_done(std::size_t k, std::vector<Point_curvature<Kernel> >&& values)`,
+          called on the calling thread
+  */
+  template <class LayerDone>
+  void estimate_curvatures(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
+                           Curvature_estimator estimator, LayerDone layer_done) const
   {
     // the fits and the nearest-surface search run in the working frame
     const auto working = get(CGAL::dynamic_vertex_property_t<Point>(), surface);
@@ -323,21 +351,31 @@ public:
         surface, in_working_frame,
         parameters::sample_spacing(m_noise.spacing, parameters::noise_level(m_noise.noise * m_noise.spacing,
           parameters::estimator(estimator).vertex_point_map(working))));
-    if(!values.empty())
-      set_surface_properties(surface, values.back());
 
     const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
     auto shape_index = [&](Surface_vertex v) { return m_kept_index[input_index[v]]; };
-    std::vector<std::vector<Point_curvature<Kernel> > > layers(values.size());
+    std::vector<Point_curvature<Kernel> > layer;
+    auto hand_over = [&](std::size_t k) {
+      layer_done(k, std::move(layer));
+      std::vector<Point_curvature<Kernel> >().swap(layer);  // in case `layer_done` did not take it
+    };
     transfer_to_points<CGAL::Parallel_if_available_tag>(
       m_shape, surface, values,
       [&](std::size_t k) {
-        layers[k].resize(number_of_input_points());
-        return internal::Input_units_writer<Kernel>{&m_input, &layers[k]};
+        // asked for layer k once layer k - 1 is written, and before the
+        // vertex values of layer k are freed: the surface's properties
+        // are set from the last layer's then, when the others' are gone
+        if(k > 0)
+          hand_over(k - 1);
+        if(k + 1 == values.size())
+          set_surface_properties(surface, values[k]);
+        layer.resize(number_of_input_points());
+        return internal::Input_units_writer<Kernel>{&m_input, &layer};
       },
       parameters::vertex_input_index_map(boost::make_function_property_map<Surface_vertex>(shape_index),
         parameters::reference_normals(std::cref(m_reference_normals)).vertex_point_map(working)));
-    return layers;
+    if(!values.empty())
+      hand_over(values.size() - 1);
   }
 
 private:
@@ -425,7 +463,8 @@ For each requested scale and neighborhood, the curvature of every input
 point (see the manual, section "Multi-scale Curvature of a Point Cloud"),
 from one conformal alpha shape of the points. The layers come scale by
 scale, neighborhoods inside. For large inputs, where all layers do not fit
-in memory, use `Multiscale_curvatures` a few layers at a time.
+in memory, use `Multiscale_curvatures`, whose `estimate_curvatures()` gives
+each layer as soon as it is made, to be kept in a smaller form or written out.
 
 \tparam PointRange a range of `Kernel::Point_3`
 \tparam NamedParameters a sequence of named parameters
@@ -473,10 +512,11 @@ multiscale_curvatures(const PointRange& points, const NamedParameters& np = CGAL
     typename Multiscale_curvatures<Kernel>::Surface surface;
     const double a = analysis.scale_value(scale);
     const Surface_report report = analysis.surface(a, surface);
-    std::vector<std::vector<Point_curvature<Kernel> > > values =
-      analysis.estimate_curvatures(surface, neighborhoods, estimator);
-    for(std::size_t k = 0; k < neighborhoods.size(); ++k)
-      layers.push_back(Curvature_layer<Kernel>{scale, a, neighborhoods[k], report, std::move(values[k])});
+    analysis.estimate_curvatures(surface, neighborhoods, estimator,
+                                 [&](std::size_t k, std::vector<Point_curvature<Kernel> >&& values) {
+                                   layers.push_back(
+                                     Curvature_layer<Kernel>{scale, a, neighborhoods[k], report, std::move(values)});
+                                 });
   }
   return layers;
 }
