@@ -322,6 +322,7 @@ Here `GT` is the kernel of the points of the vertex point map.
 \throws std::invalid_argument for a ring size below 1, a radius that is
 negative or not finite, candidate radii that are not positive and increasing,
 or candidate radii with another estimator than `QUADRIC_FIT`.
+\throws std::length_error for a mesh of more than 2^32 - 1 vertices.
 
 \returns the number of vertices whose curvature is undefined (NaN).
 */

@@ -248,7 +248,7 @@ private:
                std::vector<Level_end>& ends) const
   {
     const Vec3& p = m_graph.points[v];
-    const std::vector<std::size_t>& found = ws.search.vertices();
+    const std::vector<Vertex_graph::Index>& found = ws.search.vertices();
     const std::vector<double>& squared_distance = ws.search.squared_distances();
     const double squared_length = length * length, inverse_length = 1 / length;
     ws.shells.clear();

@@ -17,6 +17,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -25,15 +28,30 @@ namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
 // The vertex graph of a mesh: for vertex index v, its position and its
-// neighbors' indices adjacent[first[v], first[v + 1]).
+// neighbors' indices adjacent[first[v], first[v + 1]). Vertex indices are
+// 32-bit: the searches are bound by memory latency, and half-size indices
+// halve the adjacency and the searches' lists; offsets into `adjacent`
+// stay 64-bit, as a surface has about six entries in it per vertex.
 struct Vertex_graph
 {
+  typedef std::uint32_t Index;
+  static constexpr std::size_t max_size = (std::numeric_limits<Index>::max)();
+
   std::vector<Vec3> points;
   std::vector<std::size_t> first;
-  std::vector<std::size_t> adjacent;
+  std::vector<Index> adjacent;
 
   std::size_t size() const { return points.size(); }
 };
+
+// Refuses a graph of more vertices than its indices can address.
+inline void check_vertex_graph_size(std::size_t number_of_vertices)
+{
+  if(number_of_vertices > Vertex_graph::max_size)
+    throw std::length_error("curvature estimation: a surface of " + std::to_string(number_of_vertices)
+                            + " vertices, more than the " + std::to_string(Vertex_graph::max_size)
+                            + " that its vertex graph can index");
+}
 
 template <typename Point>
 Vec3 to_vec3(const Point& p)
@@ -46,6 +64,7 @@ Vertex_graph vertex_graph(const PolygonMesh& pmesh, const VPM& vpm, const Vertex
 {
   Vertex_graph g;
   const std::size_t n = num_vertices(pmesh);
+  check_vertex_graph_size(n);
   g.points.resize(n);
   std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> by_index(n);
   for(auto v : vertices(pmesh))
@@ -59,7 +78,7 @@ Vertex_graph vertex_graph(const PolygonMesh& pmesh, const VPM& vpm, const Vertex
   {
     if(halfedge(v, pmesh) != boost::graph_traits<PolygonMesh>::null_halfedge())
       for(auto u : CGAL::vertices_around_target(v, pmesh))
-        g.adjacent.push_back(get(vertex_index, u));
+        g.adjacent.push_back(Vertex_graph::Index(get(vertex_index, u)));
     g.first.push_back(g.adjacent.size());
   }
   return g;
@@ -75,7 +94,7 @@ Vertex_graph local_vertex_graph(typename boost::graph_traits<PolygonMesh>::verte
                                 std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& by_index)
 {
   Vertex_graph g;
-  std::unordered_map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, std::size_t> index;
+  std::unordered_map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, Vertex_graph::Index> index;
   std::vector<std::size_t> hops(1, 0);
   by_index.assign(1, v);
   index[v] = 0;
@@ -88,9 +107,10 @@ Vertex_graph local_vertex_graph(typename boost::graph_traits<PolygonMesh>::verte
     if(expanded && halfedge(u, pmesh) != boost::graph_traits<PolygonMesh>::null_halfedge())
       for(auto w : CGAL::vertices_around_target(u, pmesh))
       {
-        auto inserted = index.emplace(w, by_index.size());
+        auto inserted = index.emplace(w, Vertex_graph::Index(by_index.size()));
         if(inserted.second)
         {
+          check_vertex_graph_size(by_index.size() + 1);
           by_index.push_back(w);
           hops.push_back(hops[k] + 1);
           g.points.push_back(to_vec3(get(vpm, w)));
@@ -114,7 +134,7 @@ public:
 
   // The vertices found (v excluded), by increasing level, and where each
   // level's neighborhood ends: vertices()[0, end(j)) is the j-th.
-  const std::vector<std::size_t>& vertices() const { return m_found; }
+  const std::vector<Vertex_graph::Index>& vertices() const { return m_found; }
   const std::vector<double>& squared_distances() const { return m_squared_distance; }
   std::size_t end(std::size_t level) const { return m_end[level]; }
 
@@ -133,14 +153,14 @@ public:
     for(std::size_t level = 0; level < radii.size(); ++level)
       m_squared_radii[level] = radii[level] * radii[level];
     const Vec3& p = g.points[v];
-    m_pending[0].push(v, 0);
+    m_pending[0].push(Vertex_graph::Index(v), 0);
     for(std::size_t level = 0; level < radii.size(); ++level)
     {
       // the pending list of this level grows while it is walked
       const Pending& pending = m_pending[level];
       for(std::size_t k = 0; k < pending.vertices.size(); ++k)
       {
-        const std::size_t u = pending.vertices[k];
+        const Vertex_graph::Index u = pending.vertices[k];
         if(u != v)
         {
           m_found.push_back(u);
@@ -149,7 +169,7 @@ public:
         const std::size_t reached = mark_neighbors(g, u);
         for(std::size_t e = 0; e < reached; ++e)
         {
-          const std::size_t w = m_reached[e];
+          const Vertex_graph::Index w = m_reached[e];
           const double d2 = (g.points[w] - p).squaredNorm();
           std::size_t at = level;
           while(at < radii.size() && d2 > m_squared_radii[at])
@@ -168,7 +188,7 @@ public:
   {
     start(v, rings);
     std::size_t begin = 0;
-    m_found.push_back(v);  // the first frontier; removed below
+    m_found.push_back(Vertex_graph::Index(v));  // the first frontier; removed below
     m_squared_distance.push_back(0);
     for(std::size_t ring = 0; ring < rings; ++ring)
     {
@@ -215,17 +235,17 @@ private:
   // wraps.
   std::size_t mark_neighbors(const Vertex_graph& g, std::size_t u)
   {
-    const std::size_t* neighbor = g.adjacent.data() + g.first[u];
+    const Vertex_graph::Index* neighbor = g.adjacent.data() + g.first[u];
     const std::size_t degree = g.first[u + 1] - g.first[u];
     if(m_reached.size() < degree)
       m_reached.resize(degree);
     std::uint32_t* stamp = m_stamp.data();
     const std::uint32_t current = m_current;  // the stamps' stores could alias the member
-    std::size_t* reached = m_reached.data();
+    Vertex_graph::Index* reached = m_reached.data();
     std::size_t count = 0;
     for(std::size_t e = 0; e < degree; ++e)
     {
-      const std::size_t w = neighbor[e];
+      const Vertex_graph::Index w = neighbor[e];
       const bool is_new = stamp[w] != current;
       stamp[w] = current;
       reached[count] = w;
@@ -235,9 +255,9 @@ private:
   }
 
   std::vector<std::uint32_t> m_stamp;  // the search that last marked each vertex
-  std::vector<std::size_t> m_reached;  // see mark_neighbors()
+  std::vector<Vertex_graph::Index> m_reached;  // see mark_neighbors()
   std::uint32_t m_current = 0;
-  std::vector<std::size_t> m_found;
+  std::vector<Vertex_graph::Index> m_found;
   std::vector<double> m_squared_distance;
   std::vector<std::size_t> m_end;
   std::vector<double> m_squared_radii;
@@ -246,10 +266,10 @@ private:
   // (a fifth of the search's time).
   struct Pending
   {
-    std::vector<std::size_t> vertices;
+    std::vector<Vertex_graph::Index> vertices;
     std::vector<double> squared_distances;
 
-    void push(std::size_t vertex, double squared_distance)
+    void push(Vertex_graph::Index vertex, double squared_distance)
     {
       vertices.push_back(vertex);
       squared_distances.push_back(squared_distance);
