@@ -305,7 +305,7 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         manifest["denoise"] = options["denoise"] if options["denoise"] != "auto" else ("on" if calls else "off")
         save()
     if "halo_spacings" not in manifest:
-        halo = options["halo"] or halo_spacings(options["radii"], options["rings"], manifest["spacing"])
+        halo = _halo(options, manifest["spacing"])
         tile_partition.write_tile_files(cloud, tree, tiles, output, halo * manifest["spacing"], "halo")
         manifest.update(halo_spacings=halo)
         save()
@@ -317,7 +317,12 @@ def _sample_halo(sample, stride, options):
     point of a surface: ``sqrt(stride)`` times the points')."""
     from . import estimate_noise
     spacing = estimate_noise(sample).spacing / math.sqrt(stride)
-    return (options["halo"] or halo_spacings(options["radii"], options["rings"], spacing)) * spacing
+    return _halo(options, spacing) * spacing
+
+
+def _halo(options, spacing):
+    """The halo's width in spacings: the ``halo`` option, or the rule's."""
+    return options["halo"] or halo_spacings(options["radii"], options["rings"], spacing)
 
 
 def _global_noise(client, cloud, output, tiles, quiet):
