@@ -16,7 +16,7 @@ import pytest
 import conformal_alpha_shapes as cas
 from conformal_alpha_shapes import tile_io, tile_partition, tiles
 
-from conftest import fibonacci_sphere
+from conftest import fibonacci_sphere, scan_path
 
 
 def scene(n, seed=1, noise=0.1):
@@ -79,22 +79,20 @@ def scene_run(client, tmp_path_factory):
     return points, label, summary, one, folder
 
 
-def test_tiled_run_equals_one_run(scene_run):
-    points, _, summary, one, folder = scene_run
-    assert summary["tiles"] == 8
-    # the decisions of one run: spacing and noise exactly (relative 1e-12)
+def assert_same_answer(points, one, summary, folder, a_tolerance):
+    """A tiled run's merged file (in ``folder``) against ``one`` run of the module."""
     assert summary["spacing"] == pytest.approx(one.spacing, rel=1e-12)
     assert summary["noise"] == pytest.approx(one.noise, rel=1e-12)
     assert summary["denoised"] == one.denoised
     # the automatic scale: pooled closing values; the front's greedy choices
     # differ at a few points of a tile, which moves the quantile slightly
-    assert summary["a"][0] == pytest.approx(one["rauto"].a, rel=0.01)
-    merged = read_merged(folder / "out", summary["layers"])
+    assert summary["a"][0] == pytest.approx(one["rauto"].a, rel=a_tolerance)
+    merged = read_merged(folder, summary["layers"])
     assert len(merged) == len(points)
     assert np.array_equal(merged["x"], points[:, 0]) and np.array_equal(merged["z"], points[:, 2])
     assert np.array_equal(merged["outlier"].astype(bool), one.outlier)
-    indices = np.concatenate([tile_io.read_part(os.path.join(folder, "out", "parts", f"part_{t:05d}.ply"),
-                                                summary["layers"])["input_index"] for t in range(8)])
+    indices = np.concatenate([tile_io.read_part(os.path.join(folder, "parts", f"part_{t:05d}.ply"),
+                                                summary["layers"])["input_index"] for t in range(summary["tiles"])])
     assert np.array_equal(np.sort(indices.astype(np.int64)), np.arange(len(points)))  # every index once
     for name in one.layers:
         mine, theirs = normals_of(merged, name), one[name].normal
@@ -104,8 +102,25 @@ def test_tiled_run_equals_one_run(scene_run):
         H, reference = merged[f"H_{name}"].astype(np.float64), one[name].H
         both = np.isfinite(H) & np.isfinite(reference)
         assert both.sum() >= 0.99 * (~one.outlier).sum(), name
+        # the parts' floats: the large radii's centers are those of one run too
         relative = np.median(np.abs(H[both] - reference[both])) / np.median(np.abs(reference[both]))
-        assert relative <= 0.01, (name, relative)
+        assert relative <= 1e-6, (name, relative)
+
+
+def test_tiled_run_equals_one_run(scene_run):
+    points, _, summary, one, folder = scene_run
+    assert summary["tiles"] == 8
+    assert_same_answer(points, one, summary, folder / "out", 0.01)
+
+
+def test_a_scan_in_tiles_equals_one_run(client, tmp_path):
+    """building.ply (100,000 points of uneven density, with normals) in 4 tiles."""
+    points, normals = cas.read_point_cloud(scan_path("building.ply"))
+    np.save(tmp_path / "building.npy", np.hstack([points, normals]))
+    summary = tiles.process_tiles(tmp_path / "building.npy", tmp_path / "out", tile_points=25_000, client=client,
+                                  merge=True, quiet=True)
+    assert summary["tiles"] == 4
+    assert_same_answer(points, cas.multiscale_curvatures(points, normals), summary, tmp_path / "out", 0.02)
 
 
 def test_the_merged_file_is_the_programs_format(scene_run):

@@ -17,11 +17,13 @@
 #include "cas3_test_types.h"
 
 #include <boost/mpl/list.hpp>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <functional>
 #include <iostream>
@@ -591,6 +593,90 @@ BOOST_AUTO_TEST_CASE(large_radii_from_centers_follow_the_own_fits)
 #ifdef CGAL_LINKED_WITH_TBB  // without TBB there is no parallel path to compare
   BOOST_TEST(same_bits(all_outputs<CGAL::Sequential_tag>(mesh, np), all_outputs<CGAL::Parallel_tag>(mesh, np)));
 #endif
+}
+
+// The large radii's centers are chosen in the order of keys, not of the
+// vertices' numbering: the torus numbered backwards gives the same values,
+// and a copy moved by an offset (whose positions differ in their last bits)
+// gets the original's centers when given the original's keys, which its
+// own positions' hashes (the default keys) do not give.
+BOOST_AUTO_TEST_CASE(large_radii_centers_follow_keys_not_numbering)
+{
+  const double R = 1.0, r = 0.35;
+  Surface_mesh mesh;
+  cas3_test::parametric_grid<Surface_mesh, Point>(300, 120, true, true, 0.25, [&](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+  }, mesh);
+  const std::size_t n = num_vertices(mesh);
+  auto mean_curvatures = [&](const Surface_mesh& m, const auto& np) {
+    auto h = get(CGAL::dynamic_vertex_property_t<double>(), m);
+    BOOST_TEST(CAS3::estimate_vertex_curvatures(m, CAS3::parameters::vertex_mean_curvature_map(h,
+                 CAS3::parameters::neighborhood_radius(0.3, np))) == 0u);  // about 12 median edge lengths
+    std::vector<double> values;
+    for(auto v : m.vertices())
+      values.push_back(get(h, v));
+    return values;
+  };
+  auto largest_difference = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double d = 0;
+    for(std::size_t i = 0; i < a.size(); ++i)
+      d = (std::max)(d, std::abs(a[i] - b[i]));
+    return d;
+  };
+  const std::vector<double> reference = mean_curvatures(mesh, CGAL::parameters::default_values());
+  const auto backwards = boost::make_function_property_map<Surface_mesh::Vertex_index>(
+    [n](Surface_mesh::Vertex_index v) { return n - 1 - std::size_t(v.idx()); });
+  BOOST_TEST(largest_difference(reference, mean_curvatures(mesh, CGAL::parameters::vertex_index_map(backwards))) < 1e-9);
+
+  Surface_mesh moved = mesh;
+  for(auto v : moved.vertices())
+    moved.point(v) = moved.point(v) + K::Vector_3(0.123456789, -0.3, 0.7);
+  const auto original_key = boost::make_function_property_map<Surface_mesh::Vertex_index>(
+    [](Surface_mesh::Vertex_index v) { return std::uint64_t(v.idx()) * 0x9E3779B97F4A7C15ull; });
+  const std::vector<double> with_keys = mean_curvatures(mesh, CAS3::parameters::fit_center_key_map(original_key));
+  const double keyed = largest_difference(with_keys, mean_curvatures(moved, CAS3::parameters::fit_center_key_map(original_key)));
+  const double unkeyed = largest_difference(with_keys, mean_curvatures(moved, CGAL::parameters::default_values()));
+  BOOST_TEST_MESSAGE("moved torus, largest H difference: with the original's keys " << keyed << ", without " << unkeyed);
+  BOOST_TEST(keyed < 1e-6);
+  BOOST_TEST(unkeyed > 1e-4);
+}
+
+// With the sample spacing given, the large radii are those of at least 12
+// spacings, whatever the mesh's median edge length: on a torus whose edges
+// are 0.9 spacings, 11 spacings (12.2 edge lengths) is fitted at every
+// vertex, close to the one-vertex estimate, and 13 spacings at centers.
+BOOST_AUTO_TEST_CASE(large_radii_in_spacings_when_the_spacing_is_known)
+{
+  const double R = 1.0, r = 0.35;
+  Surface_mesh mesh;
+  cas3_test::parametric_grid<Surface_mesh, Point>(300, 120, true, true, 0.25, [&](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+  }, mesh);
+  std::vector<double> lengths;
+  for(auto e : mesh.edges())
+    lengths.push_back(std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1)))));
+  const double spacing = quantile(lengths, 0.5) / 0.9;
+  const auto whole = CAS3::estimate_vertex_curvatures(
+    mesh, {CAS3::Neighborhood::spacings(11), CAS3::Neighborhood::spacings(13)}, CAS3::parameters::sample_spacing(spacing));
+  std::vector<double> fine, large;  // relative differences to the one-vertex estimate
+  auto h_one = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
+  for(auto v : mesh.vertices())
+  {
+    if(v.idx() % 101 != 0)
+      continue;
+    for(int k = 0; k < 2; ++k)
+    {
+      BOOST_TEST(CAS3::estimate_vertex_curvatures(v, mesh, CAS3::parameters::vertex_mean_curvature_map(h_one,
+                                                  CAS3::parameters::neighborhood_radius((k ? 13 : 11) * spacing))));
+      (k ? large : fine).push_back(std::abs(get(h_one, v) / whole[k][v.idx()].mean_curvature() - 1));
+    }
+  }
+  BOOST_TEST_MESSAGE("relative H difference to the one-vertex estimate, median: 11 spacings "
+                     << quantile(fine, 0.5) << ", 13 spacings " << quantile(large, 0.5));
+  BOOST_TEST(quantile(fine, 0.5) < 1e-3);  // the fits' shells follow the set of radii
+  BOOST_TEST(quantile(large, 0.5) > 2e-3);
 }
 
 // The quadric fit is corrected for the fourth order of a surface of its own

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <stdexcept>
@@ -172,6 +173,24 @@ inline Neighborhood_rule neighborhood_rule(const Neighborhood& neighborhood, dou
   return rule;
 }
 
+// By vertex index, the keys of `fit_center_key_map`, or the hashes of the
+// vertices' positions in `graph`.
+template <typename PolygonMesh, typename VertexIndexMap, typename NamedParameters>
+std::vector<std::uint64_t> fit_center_keys(const PolygonMesh& pmesh, const VertexIndexMap& vertex_index,
+                                           const Vertex_graph& graph, const NamedParameters& np)
+{
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np_cas3::fit_center_key_map_t>::value)
+    return coordinate_hashes(graph.points);
+  else
+  {
+    const auto given = CGAL::parameters::get_parameter(np, internal_np_cas3::fit_center_key_map);
+    std::vector<std::uint64_t> keys(graph.size());
+    for(auto v : vertices(pmesh))
+      keys[get(vertex_index, v)] = std::uint64_t(get(given, v));
+    return keys;
+  }
+}
+
 template <typename GT>
 Vertex_curvature<GT> to_vertex_curvature(const Vertex_estimate& e)
 {
@@ -227,12 +246,16 @@ Neighborhood, by the first of these named parameters given:
 - Large radii (candidates too), of at least 10.5 median edge lengths, with
   `QUADRIC_FIT`: such a ball holds about 350 vertices or more, and its fit
   changes little from one vertex to the next, so it is fitted at centers
-  more than a sixth of the smallest large radius apart (every vertex within
+  more than a seventh of the smallest large radius apart (every vertex within
   that distance of one) and carried to each vertex by a weighted linear
   least-squares fit in the vertex's tangent plane over its center and the
   adjacent ones (exact where the curvature varies linearly; the shape
   operators are interpolated as tensors, the normals as vectors), at a
   fraction of the cost of a fit at every vertex (manual, "Neighborhoods").
+  The centers are chosen greedily in a pseudo-random order given by a key
+  per vertex (`fit_center_key_map`), so that the values do not depend on
+  the vertices' numbering, and a part of the mesh (a tile) gets the
+  centers of the whole mesh away from its borders.
 - `ring_size`: the `k`-ring of the vertex; up to two more rings are used when
   it is too small.
 
@@ -315,6 +338,11 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamType{`double`}
     \cgalParamDefault{0: measured at each vertex from the fits}
   \cgalParamNEnd
+  \cgalParamNBegin{fit_center_key_map}
+    \cgalParamDescription{the keys of the vertices in whose increasing order the large radii's centers are chosen (ties by position); give the same keys to the same points of two meshes (for example a hash of each vertex's original position, when the positions were smoothed or moved to another frame, as `Multiscale_curvatures` gives) to get the same centers where the meshes agree}
+    \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::uint64_t` as value}
+    \cgalParamDefault{a hash of the vertex's coordinates}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 Here `GT` is the kernel of the points of the vertex point map.
@@ -346,8 +374,8 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
   const std::vector<internal::Vec3> normals = internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index);
   const double noise =
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::noise_level), 0.);
-  const std::vector<internal::Vertex_estimate> estimates =
-    internal::estimate_at_every_vertex<ConcurrencyTag>(graph, normals, rules, estimator, noise).front();
+  const std::vector<internal::Vertex_estimate> estimates = internal::estimate_at_every_vertex<ConcurrencyTag>(
+    graph, normals, rules, estimator, noise, 0, internal::fit_center_keys(pmesh, vertex_index, graph, np)).front();
   std::size_t undefined = 0;
   for(vertex_descriptor v : vertices(pmesh))
   {
@@ -372,7 +400,7 @@ spacings (`Neighborhood::spacings()`, and the candidates of
     \cgalParamDescription{as above}
   \cgalParamNEnd
   \cgalParamNBegin{sample_spacing}
-    \cgalParamDescription{the length of a sample spacing, in the units of the points (`Noise_estimate::spacing`)}
+    \cgalParamDescription{the length of a sample spacing, in the units of the points (`Noise_estimate::spacing`); radii of at least 12 spacings are then the large ones, fitted at centers (instead of 10.5 median edge lengths: a length of the whole cloud, the same for any part of its surface)}
     \cgalParamType{`double`}
     \cgalParamDefault{0: no neighborhood may be in spacings}
   \cgalParamNEnd
@@ -412,7 +440,8 @@ estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborh
     const internal::Vertex_graph graph = internal::vertex_graph(pmesh, vpm, vertex_index);
     estimates = internal::estimate_at_every_vertex<ConcurrencyTag>(
       graph, internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index), rules, estimator,
-      choose_parameter(get_parameter(np, internal_np_cas3::noise_level), 0.));
+      choose_parameter(get_parameter(np, internal_np_cas3::noise_level), 0.), spacing,
+      internal::fit_center_keys(pmesh, vertex_index, graph, np));
   }
   std::vector<std::vector<Vertex_curvature<GT> > > curvatures(estimates.size());
   for(std::size_t r = 0; r < estimates.size(); ++r)
@@ -454,7 +483,7 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   std::vector<internal::Vec3> normals(graph.size());
   for(std::size_t i = 0; i < graph.size(); ++i)
     normals[i] = internal::chen_wu_normal(by_index[i], pmesh, vpm);
-  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, false);
+  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, 0, nullptr);
   internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
   internal::Vertex_estimate estimate;
   estimation.estimate(0, workspace, &estimate);

@@ -346,14 +346,17 @@ public:
     for(const Neighborhood& n : neighborhoods)
       in_working_frame.push_back(
         n.kind() == Neighborhood::RADIUS ? Neighborhood::radius(m_input.length_from_input(n.value())) : n);
+    const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
+    auto shape_index = [&](Surface_vertex v) { return m_kept_index[input_index[v]]; };
+    // the centers follow the input's coordinates, which a tile of the cloud has to the bit
+    auto input_key = [&](Surface_vertex v) { return m_input.key[shape_index(v)]; };
     std::vector<std::vector<Vertex_curvature<Kernel> > > values =
       estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
         surface, in_working_frame,
         parameters::sample_spacing(m_noise.spacing, parameters::noise_level(m_noise.noise * m_noise.spacing,
-          parameters::estimator(estimator).vertex_point_map(working))));
+          parameters::fit_center_key_map(boost::make_function_property_map<Surface_vertex>(input_key),
+            parameters::estimator(estimator).vertex_point_map(working)))));
 
-    const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
-    auto shape_index = [&](Surface_vertex v) { return m_kept_index[input_index[v]]; };
     std::vector<Point_curvature<Kernel> > layer;
     auto hand_over = [&](std::size_t k) {
       layer_done(k, std::move(layer));

@@ -35,6 +35,7 @@ enum neighborhoods_t { neighborhoods };
 enum noise_level_t { noise_level };
 enum sample_spacing_t { sample_spacing };
 enum noise_estimate_t { noise_estimate };
+enum fit_center_key_map_t { fit_center_key_map };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -90,6 +91,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhoods)
 CGAL_CAS3_ADD_NAMED_PARAMETER(noise_level)
 CGAL_CAS3_ADD_NAMED_PARAMETER(sample_spacing)
 CGAL_CAS3_ADD_NAMED_PARAMETER(noise_estimate)
+CGAL_CAS3_ADD_NAMED_PARAMETER(fit_center_key_map)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

@@ -26,6 +26,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -107,15 +108,21 @@ struct Radius_fit
 // found. A neighborhood too small or too degenerate for the fit is widened
 // (two more rings, or the radius by 1.5 twice) before the vertex is given
 // up (NaN). Radii of at least `large_radius_in_edges` median edge lengths
-// are fitted at centers a sixth of the smallest such radius apart and
+// are fitted at centers a seventh of the smallest such radius apart and
 // interpolated to the other vertices (internal/fit_centers.h);
 // `fit_at_centers()` runs those fits, before the vertices are estimated.
-// A sixth: the interpolation is exact for curvature that varies linearly,
+// A seventh: the interpolation is exact for curvature that varies linearly,
 // and its error on curvature that varies at the fit's own scale falls with
 // the square of the centers' spacing (the manual, "Neighborhoods"); 10.5
-// edge lengths, so that centers are at least 1.75 edges apart.
+// edge lengths, so that centers are at least 1.5 edges apart. Where the
+// sample spacing is known the bound is `large_radius_in_spacings` of them
+// instead, a length of the whole cloud: a tile, whose surface has a median
+// edge of its own, then counts the same radii as large as one run does.
+// 12 spacings, like 10.5 edges of a uniform sample (1.1 spacings), is
+// between the automatic rule's largest candidate and 16 spacings.
 constexpr double large_radius_in_edges = 10.5;
-constexpr double large_radius_per_center_spacing = 6;
+constexpr double large_radius_in_spacings = 12;
+constexpr double large_radius_per_center_spacing = 7;
 
 class Curvature_estimation
 {
@@ -138,12 +145,14 @@ public:
     Center_weights weights;
   };
 
-  // `normals`: the Chen-Wu normal of each vertex of `graph`. With
-  // `at_centers` false every radius is fitted at every vertex (the
-  // estimate at one vertex, whose graph is only what its search reaches).
+  // `normals`: the Chen-Wu normal of each vertex of `graph`; `center_keys`:
+  // by vertex, the keys that order the choice of the centers (Fit_centers).
+  // Without keys every radius is fitted at every vertex (the estimate at
+  // one vertex, whose graph is only what its search reaches).
+  // `sample_spacing`: 0 where unknown.
   Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                        const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                       double sample_noise = 0, bool at_centers = true)
+                       double sample_noise, double sample_spacing, const std::vector<std::uint64_t>* center_keys)
     : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator), m_sample_noise(sample_noise)
   {
     for(const Neighborhood_rule& rule : rules)
@@ -163,14 +172,17 @@ public:
         m_with_error[radius_level(r)] = 1;
 
     m_fine_levels = m_radii.size();
-    const double edge = at_centers && estimator == QUADRIC_FIT && !m_radii.empty() ? median_edge_length(graph) : 0.;
-    if(edge > 0)
+    const bool at_centers = center_keys && estimator == QUADRIC_FIT && !m_radii.empty();
+    const double large = !at_centers ? 0.
+                         : sample_spacing > 0 ? large_radius_in_spacings * sample_spacing
+                                              : large_radius_in_edges * median_edge_length(graph);
+    if(large > 0)
     {
-      m_fine_levels = radius_level(large_radius_in_edges * edge);
+      m_fine_levels = radius_level(large);
       if(m_fine_levels < m_radii.size())
       {
         const double spacing = m_radii[m_fine_levels] / large_radius_per_center_spacing;
-        m_centers = std::make_shared<const Fit_centers>(graph, spacing);
+        m_centers = std::make_shared<const Fit_centers>(graph, spacing, *center_keys);
         // the centers around a vertex: its own, within `spacing`, and
         // those adjacent to it, up to about three times that; the weights
         // fade at 1.5 times `spacing` (less smoothing)
@@ -465,9 +477,10 @@ std::vector<std::vector<Vertex_estimate> > estimate_at_every_vertex(const Vertex
                                                                    const std::vector<Vec3>& normals,
                                                                    const std::vector<Neighborhood_rule>& rules,
                                                                    Curvature_estimator estimator,
-                                                                   double sample_noise = 0)
+                                                                   double sample_noise, double sample_spacing,
+                                                                   const std::vector<std::uint64_t>& center_keys)
 {
-  Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise);
+  Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, &center_keys);
   estimation.fit_at_centers<ConcurrencyTag>();
   std::vector<std::vector<Vertex_estimate> > by_rule(rules.size(), std::vector<Vertex_estimate>(graph.size()));
   typedef Curvature_estimation::Workspace Workspace;

@@ -9,10 +9,11 @@
 // manual, "Neighborhoods", large radii). A ball of 16 sample spacings holds
 // about 800 vertices: fitting it at every vertex costs 800 neighbor visits
 // per vertex, while the fitted curvature changes little between vertices a
-// sixth of the radius apart. This header chooses the centers and the
+// seventh of the radius apart. This header chooses the centers and the
 // weights that carry their values to a vertex.
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_fits.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_neighborhoods.h>
 
 #include <Eigen/Dense>
@@ -45,11 +46,15 @@ inline double median_edge_length(const Vertex_graph& g)
 }
 
 // Centers more than `spacing` apart such that every vertex is within
-// `spacing` of one, connected to it inside that ball (chosen greedily in
-// vertex order; the surfaces of the pipeline have their vertices spatially
-// sorted, and any order gives a valid cover); each vertex belongs to the
-// nearest center that covers it. Two centers are adjacent when an edge joins vertices belonging to
-// them: the centers around a vertex are its own and those adjacent to it.
+// `spacing` of one, connected to it inside that ball, chosen greedily in
+// the order of `keys` (by vertex; ties by position). Any order gives a
+// valid cover; a pseudo-random one makes whether a vertex is a center
+// depend only on the keys of the vertices a few centers around it, so
+// that the same keys choose the same centers on any numbering of the
+// vertices and on any part of the surface that holds those vertices. Each
+// vertex belongs to the nearest center that covers it. Two centers are
+// adjacent when an edge joins vertices belonging to them: the centers
+// around a vertex are its own and those adjacent to it.
 struct Fit_centers
 {
   std::vector<std::size_t> vertex;          // by center: its vertex
@@ -58,12 +63,13 @@ struct Fit_centers
 
   std::size_t size() const { return vertex.size(); }
 
-  Fit_centers(const Vertex_graph& g, double spacing) : center_of(g.size(), unassigned)
+  Fit_centers(const Vertex_graph& g, double spacing, const std::vector<std::uint64_t>& keys)
+    : center_of(g.size(), unassigned)
   {
     std::vector<double> squared_distance(g.size(), std::numeric_limits<double>::infinity());
     Nested_neighborhood_search search(g.size());
     const std::vector<double> radius(1, spacing);
-    for(std::size_t v = 0; v < g.size(); ++v)
+    for(std::size_t v : permutation_by_hash(keys, g.points))
     {
       if(center_of[v] != unassigned)
         continue;
@@ -82,6 +88,19 @@ struct Fit_centers
         }
       }
     }
+    // numbered in vertex order, so that the fits at consecutive centers read
+    // nearby memory (the pipeline's vertices are spatially sorted)
+    std::vector<std::uint32_t> number(vertex.size());
+    std::uint32_t next = 0;
+    for(std::size_t v = 0; v < g.size(); ++v)
+      if(vertex[center_of[v]] == v)
+        number[center_of[v]] = next++;
+    std::vector<std::size_t> chosen(vertex.size());
+    for(std::size_t c = 0; c < vertex.size(); ++c)
+      chosen[number[c]] = vertex[c];
+    vertex.swap(chosen);
+    for(std::uint32_t& c : center_of)
+      c = number[c];
 
     std::vector<std::pair<std::uint32_t, std::uint32_t> > pairs;
     for(std::size_t v = 0; v < g.size(); ++v)
@@ -128,7 +147,7 @@ struct Center_fit
 // around it, interpolated by a weighted linear least-squares fit in the
 // vertex's tangent plane: exact for values that vary linearly along the
 // surface, so that the vertex does not take the curvature of a center a
-// sixth of a radius away. With fewer than four defined centers, centers
+// seventh of a radius away. With fewer than four defined centers, centers
 // nearly on a line, or weights that extrapolate (their absolute values
 // summing to more than 3: the vertex outside its centers, at a border),
 // the weighted mean. A center seen from the other side (its normal

@@ -38,6 +38,7 @@
 // which rounds to 0.)
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -51,6 +52,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -118,6 +120,7 @@ struct Normalized_input
 
   std::vector<Point> points;              // the kept points, normalized
   std::vector<std::size_t> input_index;   // kept point -> input index
+  std::vector<std::uint64_t> key;         // kept point -> hash of its input coordinates, the same in any frame
   std::vector<std::size_t> outliers;      // input indices of the removed points, increasing
   std::vector<bool> is_outlier;           // by input index
   std::array<double, 3> center = {{0, 0, 0}};  // c, in input units
@@ -318,8 +321,12 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
   result.center = hygiene_detail::median_center(p, result.input_index);
   result.size_exponent = hygiene_detail::size_exponent(p, result.input_index, result.center);
   result.points.reserve(result.input_index.size());
+  result.key.reserve(result.input_index.size());
   for(std::size_t i : result.input_index)
+  {
     result.points.push_back(result.to_normalized(p[i]));
+    result.key.push_back(coordinate_hash(p[i]));
+  }
   return result;
 }
 

@@ -92,13 +92,13 @@ std::vector<std::size_t> order_free_sample(const std::vector<Point>& points, std
   return sample;
 }
 
-// A pseudo-random order of `points` by their keys: the indices of the
-// points in that order, the same sequence of points for any order of the
-// input. The keys' leading bits place each point in one of about
+// The indices of `points` in the order of `hash` (of each point), ties by
+// the points' coordinates: the same sequence of points for any order of
+// the input. The hashes' leading bits place each point in one of about
 // `points.size() / 2` buckets, so that only the few points in a bucket are
-// compared, in linear time.
+// compared, in linear time for hashes spread evenly over their range.
 template <class Point>
-std::vector<std::size_t> order_free_permutation(const std::vector<Point>& points)
+std::vector<std::size_t> permutation_by_hash(const std::vector<std::uint64_t>& hash, const std::vector<Point>& points)
 {
   const std::size_t n = points.size();
   int bits = 0;
@@ -106,13 +106,9 @@ std::vector<std::size_t> order_free_permutation(const std::vector<Point>& points
     ++bits;
   const int shift = 64 - bits;  // bits = 0: one bucket
   auto bucket = [shift](std::uint64_t h) { return shift == 64 ? std::size_t(0) : std::size_t(h >> shift); };
-  std::vector<std::uint64_t> hash(n);
   std::vector<std::size_t> end(std::size_t(1) << bits, 0);  // by bucket, after the counting sort
   for(std::size_t i = 0; i < n; ++i)
-  {
-    hash[i] = coordinate_hash(points[i]);
     ++end[bucket(hash[i])];
-  }
   for(std::size_t b = 1; b < end.size(); ++b)
     end[b] += end[b - 1];
   std::vector<std::size_t> order(n);
@@ -130,6 +126,25 @@ std::vector<std::size_t> order_free_permutation(const std::vector<Point>& points
       std::sort(order.begin() + std::ptrdiff_t(end[b]), order.begin() + std::ptrdiff_t(last), less);
   }
   return order;
+}
+
+// The coordinate hash of each of `points`.
+template <class Point>
+std::vector<std::uint64_t> coordinate_hashes(const std::vector<Point>& points)
+{
+  std::vector<std::uint64_t> hash(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    hash[i] = coordinate_hash(points[i]);
+  return hash;
+}
+
+// A pseudo-random order of `points` by their keys: the indices of the
+// points in that order, the same sequence of points for any order of the
+// input.
+template <class Point>
+std::vector<std::size_t> order_free_permutation(const std::vector<Point>& points)
+{
+  return permutation_by_hash(coordinate_hashes(points), points);
 }
 
 // The points with their indices in the order in which they are inserted
