@@ -426,6 +426,17 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b)
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
+// A torus of 36,000 vertices on a jittered grid.
+Surface_mesh jittered_torus(double R, double r)
+{
+  Surface_mesh mesh;
+  cas3_test::parametric_grid<Surface_mesh, Point>(300, 120, true, true, 0.25, [&](double u, double v) {
+    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
+    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+  }, mesh);
+  return mesh;
+}
+
 // A rough sphere: the irregular sphere with its vertices moved along the
 // radius by up to 1% (so that the automatic radius has noise to weigh).
 Surface_mesh rough_sphere(std::size_t n)
@@ -561,11 +572,7 @@ BOOST_AUTO_TEST_CASE(single_vertex_matches_the_whole_mesh_with_radii)
 BOOST_AUTO_TEST_CASE(large_radii_from_centers_follow_the_own_fits)
 {
   const double R = 1.0, r = 0.35;
-  Surface_mesh mesh;
-  cas3_test::parametric_grid<Surface_mesh, Point>(300, 120, true, true, 0.25, [&](double u, double v) {
-    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
-    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
-  }, mesh);
+  const Surface_mesh mesh = jittered_torus(R, r);
   const double radius = 0.3;  // about 12 median edge lengths
   const auto np = CAS3::parameters::neighborhood_radius(radius);
   auto h_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
@@ -602,12 +609,7 @@ BOOST_AUTO_TEST_CASE(large_radii_from_centers_follow_the_own_fits)
 // own positions' hashes (the default keys) do not give.
 BOOST_AUTO_TEST_CASE(large_radii_centers_follow_keys_not_numbering)
 {
-  const double R = 1.0, r = 0.35;
-  Surface_mesh mesh;
-  cas3_test::parametric_grid<Surface_mesh, Point>(300, 120, true, true, 0.25, [&](double u, double v) {
-    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
-    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
-  }, mesh);
+  const Surface_mesh mesh = jittered_torus(1.0, 0.35);
   const std::size_t n = num_vertices(mesh);
   auto mean_curvatures = [&](const Surface_mesh& m, const auto& np) {
     auto h = get(CGAL::dynamic_vertex_property_t<double>(), m);
@@ -648,12 +650,7 @@ BOOST_AUTO_TEST_CASE(large_radii_centers_follow_keys_not_numbering)
 // vertex, close to the one-vertex estimate, and 13 spacings at centers.
 BOOST_AUTO_TEST_CASE(large_radii_in_spacings_when_the_spacing_is_known)
 {
-  const double R = 1.0, r = 0.35;
-  Surface_mesh mesh;
-  cas3_test::parametric_grid<Surface_mesh, Point>(300, 120, true, true, 0.25, [&](double u, double v) {
-    const double a = 2 * M_PI * u, b = 2 * M_PI * v;
-    return Point((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
-  }, mesh);
+  const Surface_mesh mesh = jittered_torus(1.0, 0.35);
   std::vector<double> lengths;
   for(auto e : mesh.edges())
     lengths.push_back(std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1)))));
