@@ -7,7 +7,10 @@
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shape_3.h>
+#include <CGAL/Conformal_alpha_shapes_3/estimate_noise.h>
 #include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 
 #include <CGAL/Alpha_shape_3.h>
@@ -15,6 +18,9 @@
 #include <CGAL/Alpha_shape_vertex_base_3.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Hilbert_sort_3.h>
+#include <CGAL/Multiscale_sort.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -705,6 +711,39 @@ BOOST_AUTO_TEST_CASE(construction_on_one_thread_gives_the_same_bits)
     BOOST_TEST((one_thread.size() == threads.size()
                 && std::memcmp(one_thread.data(), threads.data(), threads.size() * sizeof(double)) == 0));
   }
+}
+
+// What comes before the construction runs on TBB's threads too: the input
+// checks and the noise estimate (their kd-trees built in parallel) give the
+// same bits on one thread, and the insertion order, Hilbert-sorted in
+// parallel, is the serial sort's.
+BOOST_AUTO_TEST_CASE(input_checks_noise_and_insertion_order_on_one_thread)
+{
+  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(30000, 1.0, 0.7, 0.4, 0.01, 5);
+  CGAL::Conformal_alpha_shapes_3::internal::Normalized_input<K> one_input, input;
+  CGAL::Conformal_alpha_shapes_3::Noise_estimate one_noise, noise;
+  tbb::task_arena(1).execute([&]() {
+    one_input = CGAL::Conformal_alpha_shapes_3::internal::normalize_input<K>(pts);
+    one_noise = CGAL::Conformal_alpha_shapes_3::estimate_noise(one_input.points);
+  });
+  input = CGAL::Conformal_alpha_shapes_3::internal::normalize_input<K>(pts);
+  noise = CGAL::Conformal_alpha_shapes_3::estimate_noise(input.points);
+  BOOST_TEST((one_input.points == input.points));
+  BOOST_TEST((one_input.input_index == input.input_index));
+  BOOST_TEST((one_input.is_outlier == input.is_outlier));
+  const double one_values[3] = {one_noise.spacing, one_noise.noise, one_noise.noise_24};
+  const double values[3] = {noise.spacing, noise.noise, noise.noise_24};
+  BOOST_TEST(std::memcmp(one_values, values, sizeof values) == 0);
+
+  typedef std::pair<Point, std::size_t> Point_and_index;
+  const std::vector<Point_and_index> order = CGAL::Conformal_alpha_shapes_3::internal::order_free_insertion_order<K>(pts);
+  std::vector<Point_and_index> serial;
+  for(std::size_t i : CGAL::Conformal_alpha_shapes_3::internal::order_free_permutation(pts))
+    serial.emplace_back(pts[i], i);
+  typedef CGAL::Spatial_sort_traits_adapter_3<K, CGAL::First_of_pair_property_map<Point_and_index> > Sort_traits;
+  typedef CGAL::Hilbert_sort_3<Sort_traits, CGAL::Hilbert_sort_median_policy, CGAL::Sequential_tag> Hilbert_sort;
+  CGAL::Multiscale_sort<Hilbert_sort>(Hilbert_sort(Sort_traits(), 8), 64, 0.125)(serial.begin(), serial.end());
+  BOOST_TEST((order == serial));
 }
 #endif // CGAL_LINKED_WITH_TBB
 

@@ -16,6 +16,10 @@
 #include "cas3_test_data.h"
 #include "cas3_test_types.h"
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -387,6 +391,46 @@ BOOST_AUTO_TEST_CASE(the_heap_layout_does_not_change_the_soup)
     }
   }
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// The front's passes over cells, facets and triangles (the seeds, the
+// surface's order and values, the neighbors, the canonical order) and its
+// sorts run on TBB's threads, and so does the cut at a scale: on one thread,
+// the same soups to the last bit.
+BOOST_AUTO_TEST_CASE(one_thread_gives_the_same_soups)
+{
+  std::vector<Front_cloud> clouds = front_clouds();
+  Sample large = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(40000, 1, 0.7, 0.4);
+  cas3_analytic::add_normal_noise(large, 0.3, 7);
+  clouds.push_back(Front_cloud{"large noisy ellipsoid", large.points});
+  for(const Front_cloud& cloud : clouds)
+  {
+    const Cas cas(cloud.points.begin(), cloud.points.end());
+    const CAS3::internal::Advancing_front_soup soup = CAS3::internal::conformal_front_soup(cas);
+    const CAS3::Surface_front<Cas> front(cas);
+    const double a = front.suggest_scale();
+    const CAS3::internal::Advancing_front_soup pruned = CAS3::internal::pruned_soup(soup, a);
+    CAS3::internal::Advancing_front_soup one_soup, one_pruned;
+    tbb::task_arena(1).execute([&]() {
+      one_soup = CAS3::internal::conformal_front_soup(cas);
+      one_pruned = CAS3::internal::pruned_soup(one_soup, a);
+    });
+    BOOST_TEST_CONTEXT(cloud.name)
+    {
+      for(const auto& pair : {std::make_pair(&soup, &one_soup), std::make_pair(&pruned, &one_pruned)})
+      {
+        const CAS3::internal::Advancing_front_soup &threads = *pair.first, &one = *pair.second;
+        BOOST_TEST(threads.triangles.size() > 100u);
+        BOOST_TEST((one.shape_vertex == threads.shape_vertex));
+        BOOST_TEST((one.triangles == threads.triangles));
+        BOOST_TEST((one.neighbors == threads.neighbors));
+        BOOST_TEST((one.values.size() == threads.values.size()
+                    && std::memcmp(one.values.data(), threads.values.data(), one.values.size() * sizeof(double)) == 0));
+      }
+    }
+  }
+}
+#endif // CGAL_LINKED_WITH_TBB
 
 BOOST_AUTO_TEST_SUITE_END()
 

@@ -147,7 +147,9 @@ Noise_estimate estimate_noise(const PointRange& points)
   const std::vector<Point> all(points.begin(), points.end());
   if(all.size() <= std::size_t(large))
     return estimate;
-  const typename Search::Tree tree(all.begin(), all.end());
+  typename Search::Tree tree(all.begin(), all.end());
+  // built on TBB's threads: the same tree as a serial build, for 2000 searches
+  tree.template build<CGAL::Parallel_if_available_tag>();
   std::vector<double> variances_small, variances_large;
   double spacing_sum = 0;
   std::vector<std::pair<double, Eigen::Vector3d> > hits;  // squared distance, point

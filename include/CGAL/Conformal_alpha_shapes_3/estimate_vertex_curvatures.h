@@ -9,6 +9,7 @@
 
 #include <CGAL/Conformal_alpha_shapes_3/curvature_estimator.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/curvature_estimation.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/scales_and_neighborhoods.h>
 
@@ -446,9 +447,10 @@ estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborh
   std::vector<std::vector<Vertex_curvature<GT> > > curvatures(estimates.size());
   for(std::size_t r = 0; r < estimates.size(); ++r)
   {
-    curvatures[r].reserve(estimates[r].size());
-    for(const internal::Vertex_estimate& e : estimates[r])
-      curvatures[r].push_back(internal::to_vertex_curvature<GT>(e));
+    curvatures[r].resize(estimates[r].size());
+    internal::for_each_index<ConcurrencyTag>(estimates[r].size(), []() { return 0; }, [&](std::size_t v, int&) {
+      curvatures[r][v] = internal::to_vertex_curvature<GT>(estimates[r][v]);
+    });
     std::vector<internal::Vertex_estimate>().swap(estimates[r]);
   }
   return curvatures;

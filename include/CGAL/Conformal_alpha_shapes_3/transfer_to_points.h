@@ -284,17 +284,29 @@ void transfer_to_points(const ConformalAlphaShape& cas, const PolygonMesh& pmesh
   const auto& reference_normals = choose_parameter(
     CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals);
 
+  // the index and the shape vertex of each surface vertex, in the order of
+  // vertices(pmesh): found once (on TBB's threads), since each is a walk
+  // through the input index to a vertex handle
+  std::vector<vertex_descriptor> surface_vertices(vertices(pmesh).first, vertices(pmesh).second);
+  std::vector<std::pair<std::size_t, std::size_t> > index_and_shape_vertex(surface_vertices.size());
+  internal::for_each_index<ConcurrencyTag>(surface_vertices.size(), []() { return 0; }, [&](std::size_t k, int&) {
+    const vertex_descriptor v = surface_vertices[k];
+    index_and_shape_vertex[k] = std::make_pair(std::size_t(get(vertex_index, v)),
+                                               std::size_t(cas.input_vertex(get(input_index, v))->vertex_index()));
+  });
+  std::vector<vertex_descriptor>().swap(surface_vertices);
+
   // for every vertex of the shape (by vertex index), the surface vertex whose
   // value it takes: its own first; at a pinch, the first one whose value is
   // defined; none when none is
   const std::size_t none = std::size_t(-1);
   auto own_vertices = [&](const std::vector<Value>& values) {
     std::vector<std::size_t> own(cas.number_of_vertices(), none);
-    for(vertex_descriptor v : vertices(pmesh))
+    for(const std::pair<std::size_t, std::size_t>& v : index_and_shape_vertex)
     {
-      std::size_t& o = own[cas.input_vertex(get(input_index, v))->vertex_index()];
-      if(o == none && values[get(vertex_index, v)].is_defined())
-        o = get(vertex_index, v);
+      std::size_t& o = own[v.second];
+      if(o == none && values[v.first].is_defined())
+        o = v.first;
     }
     return own;
   };

@@ -64,8 +64,8 @@
 //
 // The cost is CGAL's, but for the seeding (CGAL scans every facet for each
 // part: here the first scan runs in chunks side by side, and the facets
-// left all exterior after the first part are sorted once), the copies (no
-// copy of the triangulation, no 2D structure), the surface's faces
+// left all exterior after the first part are listed so and sorted once),
+// the copies (no copy of the triangulation, no 2D structure), the surface's faces
 // (sorted from the facets taken, not found by a walk over all facets) and
 // the re-evaluations of every border edge each time a part runs out of
 // valid candidates, where CGAL spends most of its time when the front
@@ -349,14 +349,6 @@ private:
                       && is_exterior(rank(c, (i + 3) & 3));
     if(seed && !seeding.may_seed(*this))
       return infinity;
-    return facet_priority(c, i);
-  }
-  // the priority of a finite facet whose vertices are all exterior, with
-  // the seeding's test made once per seeding (see `init()`)
-  double seed_priority(Cell_handle c, int i)
-  {
-    if(++calls % 1024 == 0)
-      interruption.throw_if_stopped();
     return facet_priority(c, i);
   }
   double facet_priority(Cell_handle c, int i) const
@@ -730,17 +722,8 @@ private:
   }
 
   // --- seeding -------------------------------------------------------------
-  // The finite facets in CGAL's order, each once, from its cell of smaller
-  // index.
-  template <class F>
-  void for_each_finite_facet(F&& f) const
-  {
-    for(auto c = cas.tds().cells_begin(); c != cas.tds().cells_end(); ++c)
-      for(int i = 0; i < 4; ++i)
-        if(c->cell_index() < c->neighbor(i)->cell_index() && !cas.is_infinite(Cell_handle(c), i))
-          f(Cell_handle(c), i);
-  }
-
+  // The finite facets are in CGAL's order by 4 cell index + i, each once,
+  // from its cell of smaller index (the cells' order is the triangulation's).
   bool all_exterior(Cell_handle c, int i) const
   {
     return is_exterior(rank(c, (i + 1) & 3)) && is_exterior(rank(c, (i + 2) & 3))
@@ -799,15 +782,29 @@ private:
       if(!seeds_ready)
       {
         seeds_ready = true;
-        for_each_finite_facet([&](Cell_handle c, int i) {
-          if(all_exterior(c, i))
-          {
-            const double value = seed_priority(c, i);
-            if(value != infinity)
-              seeds.emplace_back(value, std::uint64_t(c->cell_index()) * 4 + std::uint64_t(i));
-          }
-        });
-        std::sort(seeds.begin(), seeds.end());
+        // listed in chunks of cells side by side, then sorted
+        typedef std::vector<std::pair<double, std::uint64_t> > Seeds;
+        const std::vector<Seeds> chunks = partial_results_in_chunks<Parallel_if_available_tag>(
+          cells_by_index.size(), []() { return Seeds(); },
+          [&](std::size_t begin, std::size_t end, Seeds& chunk) {
+            for(std::size_t k = begin; k < end; ++k)
+            {
+              if((k - begin) % 4096 == 0 && interruption.stop_requested())
+                return;
+              const Cell_handle c = cells_by_index[k];
+              for(int i = 0; i < 4; ++i)
+                if(k < c->neighbor(i)->cell_index() && !cas.is_infinite(c, i) && all_exterior(c, i))
+                {
+                  const double value = facet_priority(c, i);
+                  if(value != infinity)
+                    chunk.emplace_back(value, 4 * std::uint64_t(k) + std::uint64_t(i));
+                }
+            }
+          });
+        interruption.throw_if_stop_was_requested();
+        for(const Seeds& chunk : chunks)
+          seeds.insert(seeds.end(), chunk.begin(), chunk.end());
+        sort_distinct<Parallel_if_available_tag>(seeds.begin(), seeds.end(), std::less<>());
       }
       while(next_seed < seeds.size())
       {
@@ -1226,20 +1223,18 @@ public:
       soup.triangles.push_back(triangle);
       facets.emplace_back(c, i);
     };
-    // the order of `for_each_finite_facet()`, a facet's first cell's side
-    // first: sorted rather than found by a walk over every facet
+    // the order of the finite facets (see "seeding"), a facet's first
+    // cell's side first: sorted rather than found by a walk over every facet
     {
-      std::vector<std::pair<std::uint64_t, std::size_t> > order;
-      order.reserve(selected.size());
-      for(std::size_t k = 0; k < selected.size(); ++k)
-      {
+      std::vector<std::pair<std::uint64_t, std::size_t> > order(selected.size());
+      for_each_index<Parallel_if_available_tag>(selected.size(), []() { return 0; }, [&](std::size_t k, int&) {
         const Cell_handle c = selected[k].first, n = c->neighbor(selected[k].second);
         const bool first = c->cell_index() < n->cell_index();
         const std::uint64_t facet = first ? std::uint64_t(c->cell_index()) * 4 + std::uint64_t(selected[k].second)
                                           : std::uint64_t(n->cell_index()) * 4 + std::uint64_t(n->index(c));
-        order.emplace_back(2 * facet + (first ? 0 : 1), k);
-      }
-      std::sort(order.begin(), order.end());
+        order[k] = std::make_pair(2 * facet + (first ? 0 : 1), k);
+      });
+      sort_distinct<Parallel_if_available_tag>(order.begin(), order.end(), std::less<>());
       for(const auto& o : order)
         add(selected[o.second].first, selected[o.second].second);
     }
@@ -1261,7 +1256,7 @@ public:
             const Id a = vertex_rank(V[t][(k + 2) % 3]), b = vertex_rank(V[t][(k + 1) % 3]);
             border.emplace_back(std::make_pair((std::min)(a, b), (std::max)(a, b)), 3 * t + std::size_t(k));
           }
-      std::sort(border.begin(), border.end());
+      sort_distinct<Parallel_if_available_tag>(border.begin(), border.end(), std::less<>());
       std::vector<std::size_t> pending(nv, no);  // by vertex: an infinite face's corner 3 f + idx
       for(const auto& e : border)
       {
@@ -1331,7 +1326,18 @@ public:
     Advancing_front_soup out;
     out.triangles.reserve(nt);
     out.neighbors.reserve(nt);
-    out.values.reserve(nt);
+    out.values.resize(nt);
+    for_each_index<Parallel_if_available_tag>(nt, []() { return 0; }, [&](std::size_t t, int&) {
+      Cell_handle c = facets[t].first;
+      int i = facets[t].second;
+      if(turned[t])
+      {
+        const Cell_handle n = c->neighbor(i);
+        i = n->index(c);
+        c = n;
+      }
+      out.values[t] = double(cas.conformal_alpha(c, i));
+    });
     std::vector<std::size_t> new_vertex(nv, no);
     for(std::size_t t = 0; t < nt; ++t)
     {
@@ -1349,15 +1355,6 @@ public:
       }
       out.triangles.push_back(triangle);
       out.neighbors.push_back(neighbor);
-      Cell_handle c = facets[t].first;
-      int i = facets[t].second;
-      if(turned[t])
-      {
-        const Cell_handle n = c->neighbor(i);
-        i = n->index(c);
-        c = n;
-      }
-      out.values.push_back(double(cas.conformal_alpha(c, i)));
     }
     return out;
   }

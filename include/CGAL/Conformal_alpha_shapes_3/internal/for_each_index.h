@@ -18,6 +18,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -99,6 +100,22 @@ std::vector<decltype(std::declval<MakePartial&>()())> partial_results_in_chunks(
   for(std::size_t k = 0; k < chunks; ++k)
     run(k);
   return partial;
+}
+
+// Sorts [first, last) by `less`, on TBB's threads as the concurrency tag
+// says. `less` must order every two elements (no two equivalent), so that
+// the order is the same whichever sort makes it.
+template <typename ConcurrencyTag, typename RandomAccessIterator, typename Less>
+void sort_distinct(RandomAccessIterator first, RandomAccessIterator last, Less less)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_sort(first, last, less);
+    return;
+  }
+#endif
+  std::sort(first, last, less);
 }
 
 } // namespace internal

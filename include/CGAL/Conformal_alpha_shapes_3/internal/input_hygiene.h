@@ -240,7 +240,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
       else
         tested.emplace_back(x, i);
     }
-    CGAL::spatial_sort(tested.begin(), tested.end(),
+    CGAL::spatial_sort<CGAL::Parallel_if_available_tag>(tested.begin(), tested.end(),
                        CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::First_of_pair_property_map<Point_and_index> >());
     std::vector<Point> q;
     std::vector<std::size_t> near;  // input index of q[i]
@@ -270,7 +270,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
       for(std::size_t i = 0; i < q.size(); ++i)
         ids[i] = i;
       Tree tree(ids.begin(), ids.end(), typename Tree::Splitter(), Traits(point_map));
-      tree.build();
+      tree.template build<CGAL::Parallel_if_available_tag>();
       const Distance distance(point_map);
       // the searches only read the tree: one per point, on any thread
       for_each_index<CGAL::Parallel_if_available_tag>(q.size(), []() { return 0; }, [&](std::size_t i, int) {

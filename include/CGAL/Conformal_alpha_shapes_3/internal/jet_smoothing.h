@@ -124,7 +124,8 @@ void jet_smooth_pass(const std::vector<Point>& points, unsigned int k, std::vect
   if(points.size() <= std::size_t(k))
     return;
   Tree tree(points.begin(), points.end(), Splitter(16));  // buckets of 16: a little faster than 10 at k = 24..64
-  tree.build();
+  // on TBB's threads the same tree (its nodes are split alike), so the same hits
+  tree.template build<ConcurrencyTag>();
   internal::for_each_index<ConcurrencyTag>(points.size(),
     [k]() {
       std::vector<Eigen::Vector3d> offsets;
@@ -161,7 +162,7 @@ void jet_smooth_points(std::vector<Point>& points, unsigned int k, int passes)
   std::vector<std::size_t> order(points.size());
   for(std::size_t i = 0; i < order.size(); ++i)
     order[i] = i;
-  CGAL::hilbert_sort(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(points)));
+  CGAL::hilbert_sort<ConcurrencyTag>(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(points)));
   std::vector<Point> current(points.size()), smoothed;
   for(std::size_t i = 0; i < order.size(); ++i)
     current[i] = points[order[i]];

@@ -163,7 +163,8 @@ std::vector<std::pair<Point, std::size_t> > order_free_insertion_order(const std
   for(std::size_t i : order_free_permutation(points))
     order.emplace_back(points[i], i);
   typedef Spatial_sort_traits_adapter_3<Gt, First_of_pair_property_map<Point_and_index> > Sort_traits;
-  typedef Hilbert_sort_3<Sort_traits, Hilbert_sort_median_policy> Hilbert_sort;
+  // on TBB's threads the same order: the parallel sort splits the ranges as the serial one
+  typedef Hilbert_sort_3<Sort_traits, Hilbert_sort_median_policy, Parallel_if_available_tag> Hilbert_sort;
   Multiscale_sort<Hilbert_sort>(Hilbert_sort(Sort_traits(), 8), 64, 0.125)(order.begin(), order.end());
   return order;
 }

@@ -6,12 +6,17 @@
 
 // The surface as the advancing front leaves it (conformal_front.h),
 // a soup of triangles with their neighbors, and what is done to it before
-// it becomes a mesh: a canonical order, and the cut at a scale.
+// it becomes a mesh: a canonical order, and the cut at a scale. The passes
+// per vertex group and per triangle, and the sorts, run on TBB's threads when
+// CGAL_LINKED_WITH_TBB, with the same results.
+
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <numeric>
 #include <tuple>
 #include <type_traits>
@@ -82,8 +87,8 @@ inline void pair_neighbors(Advancing_front_soup& soup)
       by_vertex[next[ends(c).first]++] = c;
   }
   soup.neighbors.assign(nt, {{none, none, none}});
-  for(std::size_t v = 0; v + 1 < first.size(); ++v)
-  {
+  // each vertex's corners only: its group is sorted and paired on its own
+  for_each_index<Parallel_if_available_tag>(first.size() - 1, []() { return 0; }, [&](std::size_t v, int&) {
     const auto begin = by_vertex.begin() + std::ptrdiff_t(first[v]);
     const auto end = by_vertex.begin() + std::ptrdiff_t(first[v + 1]);
     // corners of one triangle have different edges, so the corner orders
@@ -100,7 +105,7 @@ inline void pair_neighbors(Advancing_front_soup& soup)
       }
       else
         ++i;
-  }
+  });
 }
 
 // Puts the soup in an order that depends only on its triangles, not on the
@@ -134,8 +139,8 @@ inline void put_in_canonical_order(Advancing_front_soup& soup)
         first_triangle[v] = (std::min)(first_triangle[v], sorted(t));
     std::vector<std::size_t> vertex_order(nv);
     std::iota(vertex_order.begin(), vertex_order.end(), std::size_t(0));
-    std::sort(vertex_order.begin(), vertex_order.end(), [&](std::size_t x, std::size_t y) {
-      return std::tie(soup.shape_vertex[x], first_triangle[x]) < std::tie(soup.shape_vertex[y], first_triangle[y]);
+    sort_distinct<Parallel_if_available_tag>(vertex_order.begin(), vertex_order.end(), [&](std::size_t x, std::size_t y) {
+      return std::tie(soup.shape_vertex[x], first_triangle[x], x) < std::tie(soup.shape_vertex[y], first_triangle[y], y);
     });
     std::vector<std::size_t> new_vertex(nv), shape_vertex(nv);
     for(std::size_t i = 0; i < nv; ++i)
@@ -202,8 +207,7 @@ inline void put_in_canonical_order(Advancing_front_soup& soup)
   // each triangle turned with its part and rotated to start at its
   // smallest vertex, with its neighbors (opposite to each vertex) moved
   // alike
-  for(std::size_t t = 0; t < nt; ++t)
-  {
+  for_each_index<Parallel_if_available_tag>(nt, []() { return 0; }, [&](std::size_t t, int&) {
     Triple v = soup.triangles[t], n = soup.neighbors[t];
     if(state[t] == turned)
     {
@@ -216,31 +220,34 @@ inline void put_in_canonical_order(Advancing_front_soup& soup)
       soup.triangles[t][k] = v[(k + r) % 3];
       soup.neighbors[t][k] = n[(k + r) % 3];
     }
-  }
+  });
   state = std::vector<char>();
 
   std::vector<std::size_t> triangle_order(nt);
   std::iota(triangle_order.begin(), triangle_order.end(), std::size_t(0));
-  std::sort(triangle_order.begin(), triangle_order.end(),
-            [&](std::size_t x, std::size_t y) { return soup.triangles[x] < soup.triangles[y]; });
+  sort_distinct<Parallel_if_available_tag>(triangle_order.begin(), triangle_order.end(), [&](std::size_t x, std::size_t y) {
+    return std::tie(soup.triangles[x], x) < std::tie(soup.triangles[y], y);
+  });
   auto permuted = [&](const auto& by_old) {
-    typename std::decay<decltype(by_old)>::type by_new;
-    by_new.reserve(nt);
-    for(std::size_t t : triangle_order)
-      by_new.push_back(by_old[t]);
+    typename std::decay<decltype(by_old)>::type by_new(nt);
+    for_each_index<Parallel_if_available_tag>(nt, []() { return 0; }, [&](std::size_t i, int&) {
+      by_new[i] = by_old[triangle_order[i]];
+    });
     return by_new;
   };
   soup.triangles = permuted(soup.triangles);
   soup.neighbors = permuted(soup.neighbors);
   soup.values = permuted(soup.values);
   std::vector<std::size_t> new_triangle(nt);
-  for(std::size_t i = 0; i < nt; ++i)
+  for_each_index<Parallel_if_available_tag>(nt, []() { return 0; }, [&](std::size_t i, int&) {
     new_triangle[triangle_order[i]] = i;
+  });
   triangle_order = std::vector<std::size_t>();
-  for(Triple& n : soup.neighbors)
-    for(std::size_t& x : n)
+  for_each_index<Parallel_if_available_tag>(nt, []() { return 0; }, [&](std::size_t t, int&) {
+    for(std::size_t& x : soup.neighbors[t])
       if(x != none)
         x = new_triangle[x];
+  });
 }
 
 // The soup at scale `a` cut from the soup grown with no bound: the
@@ -319,7 +326,7 @@ inline Advancing_front_soup pruned_soup(const Advancing_front_soup& soup, double
     for(int k = 0; k < 3 && keep[t]; ++k)
       if(find(3 * t + k) == 3 * t + k)
         fans.emplace_back(soup.triangles[t][k], 3 * t + k);
-  std::sort(fans.begin(), fans.end());
+  sort_distinct<Parallel_if_available_tag>(fans.begin(), fans.end(), std::less<>());
   Advancing_front_soup pruned;
   std::vector<std::size_t> vertex_of_fan(3 * nt, none);
   for(const std::pair<std::size_t, std::size_t>& fan : fans)
