@@ -380,7 +380,18 @@ public:
     // the same value in its last bits from either of its cells
     std::array<Vertex_handle, 3> v{{c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}};
     std::sort(v.begin(), v.end(), [](Vertex_handle a, Vertex_handle b) { return a->vertex_index() < b->vertex_index(); });
-    const FT radius = std::sqrt(this->geom_traits().compute_squared_radius_3_object()(v[0]->point(), v[1]->point(), v[2]->point()));
+    // the kernel's denominator (|pr x qr|^2 as a determinant), which its
+    // assertions refuse at 0: a facet nearly collinear in double, of radius
+    // +infinity, as the division by 0 gives where assertions are off
+    const auto& p = v[0]->point();
+    const auto& q = v[1]->point();
+    const auto& r = v[2]->point();
+    const double prx = p.x() - r.x(), pry = p.y() - r.y(), prz = p.z() - r.z();
+    const double qrx = q.x() - r.x(), qry = q.y() - r.y(), qrz = q.z() - r.z();
+    if(CGAL::determinant(prx, pry, prz, qrx, qry, qrz, pry * qrz - prz * qry, prz * qrx - prx * qrz,
+                         prx * qry - pry * qrx) == 0)
+      return infinity();
+    const FT radius = std::sqrt(this->geom_traits().compute_squared_radius_3_object()(p, q, r));
     // a nearly collinear hull facet far out may have a radius beyond
     // double's range: +infinity, or NaN (infinity times 0) made +infinity,
     // so that every value stays ordered
