@@ -317,10 +317,13 @@ public:
     return values;
   }
 
-  // The layers of `scales` and the run's decisions, as `multiscale_curvatures` returns them.
-  py::dict result(const std::vector<CAS3::Scale>& scales, const Checkpoint& checkpoint) const
+  // The layers of `scales` and the run's decisions, as `multiscale_curvatures`
+  // returns them: the job's last call, as in the program the shape is freed
+  // before the last scale's fits, then the rest of the analysis.
+  py::dict result(const std::vector<CAS3::Scale>& scales, const Checkpoint& checkpoint)
   {
-    const Analysis& analysis = this->analysis();
+    this->analysis();  // raises when the shape was released
+    Analysis& analysis = *m_analysis;
     const Job_options& o = m_options;
     const Thread_cap cap(m_threads);
     const std::size_t steps = 1 + scales.size() * (1 + o.neighborhoods.size());
@@ -338,22 +341,24 @@ public:
         step("curvature at scale " + cas3::scale_text(scale));
         // each layer becomes its arrays as soon as it is made: the point
         // layers' values are never all held at once
-        analysis.estimate_curvatures(
-          surface, o.neighborhoods, o.estimator,
-          [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& values) {
-            const std::string label = cas3::layer_label(scale, o.neighborhoods[r], scales.size() > 1);
-            {
-              py::gil_scoped_acquire gil;
-              py::dict layer = layer_arrays(values);
-              layer["name"] = label;
-              layer["a"] = a;
-              layer["description"] = cas3::layer_description(analysis, a, scale, o.neighborhoods[r], label);
-              layer["surface"] = report_dict(report);
-              layers.append(layer);
-            }
-            if(r + 1 < o.neighborhoods.size())
-              step("curvature at scale " + cas3::scale_text(scale));
-          });
+        auto layer_done = [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& values) {
+          const std::string label = cas3::layer_label(scale, o.neighborhoods[r], scales.size() > 1);
+          {
+            py::gil_scoped_acquire gil;
+            py::dict layer = layer_arrays(values);
+            layer["name"] = label;
+            layer["a"] = a;
+            layer["description"] = cas3::layer_description(analysis, a, scale, o.neighborhoods[r], label);
+            layer["surface"] = report_dict(report);
+            layers.append(layer);
+          }
+          if(r + 1 < o.neighborhoods.size())
+            step("curvature at scale " + cas3::scale_text(scale));
+        };
+        if(&scale == &scales.back())
+          std::move(analysis).estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
+        else
+          analysis.estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
       }
       checkpoint("done", 1.0);
       return 0;
@@ -372,6 +377,7 @@ public:
     result["denoised"] = denoising.passes > 0;
     result["denoising_passes"] = denoising.passes;
     result["denoising_neighbors"] = denoising.neighbors;
+    release();
     return result;
   }
 
@@ -407,9 +413,7 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
     read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
   const Checkpoint checkpoint(std::move(progress));
   Job job(points_array, normals_array, o, threads, given_spacing, given_noise, checkpoint);
-  py::dict result = job.result(o.scales, checkpoint);
-  job.release();
-  return result;
+  return job.result(o.scales, checkpoint);
 }
 
 // Writes the program's curvatures.ply from the arrays of a result: the same
@@ -706,7 +710,7 @@ PYBIND11_MODULE(_native, m)
          py::arg("denoise"), py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"),
          py::arg("progress"), py::arg("spacing"), py::arg("noise"))
     .def("closing_values", &Job::closing_values)
-    .def("result", [](const Job& job, const std::vector<std::string>& scales, py::object progress) {
+    .def("result", [](Job& job, const std::vector<std::string>& scales, py::object progress) {
            return job.result(read_job_options(scales, {"auto"}, {}, "quadric", "auto", "", "front").scales,
                              Checkpoint(std::move(progress)));
          })

@@ -31,7 +31,8 @@
 //              Multiscale_curvatures construction, alpha(Scale::automatic()),
 //              extract_surface, estimate_curvatures for
 //              default_neighborhoods() (the fits and the nearest-surface
-//              filling), each layer made the program's, in float with its
+//              filling) on the consumed analysis (its shape freed before
+//              the fits), each layer made the program's, in float with its
 //              summary statistics, as estimate_curvatures gives it (one
 //              stage, as in the program: the layers in double are never
 //              all held), the surface PLY with the layers, and the binary PLY point
@@ -485,9 +486,10 @@ void measure_pipeline(Child_meter& m, const Input& in, const std::string& tmp)
   std::vector<cas3::Layer> layers;
   const std::vector<CAS3::Neighborhood> neighborhoods = CAS3::default_neighborhoods();
   m.stage("estimate_curvatures (" + std::to_string(neighborhoods.size())
-            + " neighborhoods), each layer made the program's (float, summary) as it comes", "stage", [&] {
+            + " neighborhoods), the shape freed first and each layer made the program's (float, summary) as it comes",
+          "stage", [&] {
     std::string summaries;
-    analysis->estimate_curvatures(
+    std::move(*analysis).estimate_curvatures(
       surface, neighborhoods, CAS3::QUADRIC_FIT,
       [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& curvatures) {
         const CAS3::Neighborhood& neighborhood = neighborhoods[r];

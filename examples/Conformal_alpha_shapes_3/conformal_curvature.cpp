@@ -106,22 +106,26 @@ int run(const cas3::Curvature_options& o)
     cas3::return_freed_memory();
     // each layer is kept in float as soon as it is made: its values in
     // double are never all held at once
-    analysis->estimate_curvatures(
-      surface, o.neighborhoods, o.estimator,
-      [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& curvatures) {
-        const CAS3::Neighborhood& neighborhood = o.neighborhoods[r];
-        cas3::Layer layer(curvatures);
-        layer.label = cas3::layer_label(scale, neighborhood, o.scales.size() > 1);
-        layer.description = cas3::layer_description(*analysis, a, scale, neighborhood, layer.label);
-        if(o.csv)
-        {
-          cas3::append_csv_rows(csv, points, a, neighborhood, curvatures, is_outlier);
-          output.check(csv);
-        }
-        summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
-        progress("layer " + layer.label + ": curvature estimated");
-        layers.push_back(std::move(layer));
-      });
+    auto layer_done = [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& curvatures) {
+      const CAS3::Neighborhood& neighborhood = o.neighborhoods[r];
+      cas3::Layer layer(curvatures);
+      layer.label = cas3::layer_label(scale, neighborhood, o.scales.size() > 1);
+      layer.description = cas3::layer_description(*analysis, a, scale, neighborhood, layer.label);
+      if(o.csv)
+      {
+        cas3::append_csv_rows(csv, points, a, neighborhood, curvatures, is_outlier);
+        output.check(csv);
+      }
+      summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
+      progress("layer " + layer.label + ": curvature estimated");
+      layers.push_back(std::move(layer));
+    };
+    // the last scale's fits need the shape no more: freed before them, it
+    // is not held with their values
+    if(&scale == &o.scales.back())
+      std::move(*analysis).estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
+    else
+      analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
     if(!cloud.normals.empty())
       summary << cas3::summary_normals_line(cas3::scale_text(scale), surface, cloud.normals);
     std::ofstream ply = output.open("surface_" + cas3::scale_label(scale) + ".ply", true);

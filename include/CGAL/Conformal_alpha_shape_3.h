@@ -286,13 +286,13 @@ public:
     return m_input_vertices.size();
   }
 
-  /// Empties the shape.
+  /// Empties the shape and frees its memory.
   void clear()
   {
     Dt::clear();
-    m_input_vertices.clear();
+    std::vector<Vertex_handle>().swap(m_input_vertices);
     m_input_indices.clear();
-    m_spectrum.clear();
+    std::vector<FT>().swap(m_spectrum);
     m_spectrum_ready = false;
   }
   /// @}

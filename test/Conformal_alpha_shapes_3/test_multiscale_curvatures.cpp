@@ -11,6 +11,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/scales_and_neighborhoods.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_jet_fitting.h"
@@ -353,6 +354,72 @@ BOOST_AUTO_TEST_CASE(layers_given_as_they_are_made)
   for(Analysis::Surface_vertex v : given_surface.vertices())
     differing += same_double(returned_h[v], given_h[v]) ? 0 : 1;
   BOOST_TEST(differing == 0u);
+}
+
+// Consumed (estimate_curvatures() on an rvalue), an analysis frees its
+// shape before the fits and gives the same bits in every layer as one that
+// keeps it, on a noisy ellipsoid whose surface lost a cap (points off the
+// surface, near it and far from it) with a neighborhood too small for some
+// fits (their points take the values of a nearest surface point, found
+// after the fits); then what needs the shape throws, and the rest answers.
+BOOST_AUTO_TEST_CASE(a_consumed_analysis_gives_the_same_values)
+{
+  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 0.7, 0.4);
+  cas3_analytic::add_normal_noise(s, 0.3, 7);
+  auto remove_cap = [](Analysis::Surface& surface) {
+    std::vector<Analysis::Surface::Face_index> cap;
+    for(auto f : surface.faces())
+      for(auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+        if(surface.point(v).z() > 0.3)
+        {
+          cap.push_back(f);
+          break;
+        }
+    for(auto f : cap)
+      CGAL::Euler::remove_face(surface.halfedge(f), surface);
+    surface.collect_garbage();
+  };
+  const std::vector<CAS3::Neighborhood> neighborhoods{
+    CAS3::Neighborhood::automatic(), CAS3::Neighborhood::spacings(0.5), CAS3::Neighborhood::spacings(4)};
+  const Analysis kept(s.points.begin(), s.points.end());
+  Analysis consumed(s.points.begin(), s.points.end());
+  const double a = kept.scale_value(CAS3::Scale::automatic());
+  BOOST_TEST(a == consumed.scale_value(CAS3::Scale::automatic()));
+  Analysis::Surface kept_surface, consumed_surface;
+  kept.surface(a, kept_surface);
+  consumed.surface(a, consumed_surface);
+  remove_cap(kept_surface);
+  remove_cap(consumed_surface);
+  const auto expected = kept.estimate_curvatures(kept_surface, neighborhoods);
+  const auto layers = std::move(consumed).estimate_curvatures(consumed_surface, neighborhoods);
+  for(std::size_t l = 0; l < neighborhoods.size(); ++l)
+  {
+    std::size_t differing = 0, off = 0, far = 0, on_but_undefined = 0;
+    for(std::size_t i = 0; i < s.points.size(); ++i)
+    {
+      differing += same_bits(layers[l][i], expected[l][i]) ? 0 : 1;
+      if(layers[l][i].source == CAS3::NEAREST_SURFACE_POINT)
+        (layers[l][i].distance < 1e-9 ? on_but_undefined : off) += 1;
+      far += layers[l][i].source == CAS3::NO_VALUE ? 1 : 0;
+    }
+    BOOST_TEST_CONTEXT("neighborhood " << l)
+    {
+      BOOST_TEST(differing == 0u);
+      BOOST_TEST(off > 0u);
+      BOOST_TEST(far > 0u);
+      if(l == 1)
+        BOOST_TEST(on_but_undefined > 0u);
+    }
+  }
+
+  BOOST_TEST(consumed.shape().number_of_vertices() == 0u);
+  BOOST_CHECK_THROW(consumed.surface(a, consumed_surface), std::logic_error);
+  BOOST_CHECK_THROW(consumed.closing_values(), std::logic_error);
+  BOOST_CHECK_THROW(consumed.scale_value(CAS3::Scale::quantile(0.25)), std::logic_error);
+  BOOST_CHECK_THROW(consumed.estimate_curvatures(consumed_surface, neighborhoods), std::logic_error);
+  BOOST_TEST(consumed.scale_value(CAS3::Scale::automatic()) == a);
+  BOOST_TEST(consumed.noise().spacing == kept.noise().spacing);
+  BOOST_TEST(consumed.number_of_input_points() == s.points.size());
 }
 
 // The noise_estimate of a larger run (issue 37: tiles take the whole

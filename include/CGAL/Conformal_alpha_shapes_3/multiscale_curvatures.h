@@ -22,6 +22,7 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -231,13 +232,16 @@ public:
     switch(scale.kind())
     {
       case Scale::ABSOLUTE: return scale.value();
-      case Scale::QUANTILE: return m_shape.alpha_at_quantile(scale.value());
+      case Scale::QUANTILE: require_shape("scale_value"); return m_shape.alpha_at_quantile(scale.value());
       case Scale::AUTOMATIC: break;
     }
     if(!(m_suggested >= 0))
+    {
+      require_shape("scale_value");
       m_suggested = m_extraction == ADVANCING_FRONT
                       ? front().suggest_scale()
                       : Conformal_alpha_shapes_3::suggest_scale(m_shape, parameters::surface_extraction(m_extraction));
+    }
     return m_suggested;
   }
 
@@ -249,6 +253,7 @@ public:
   /// quantile of the values that are not NaN.
   std::vector<double> closing_values() const
   {
+    require_shape("closing_values");
     const std::vector<double> by_vertex = front().closing_values();
     std::vector<double> closing(number_of_input_points(), std::numeric_limits<double>::quiet_NaN());
     std::vector<bool> taken(by_vertex.size(), false);
@@ -268,6 +273,7 @@ public:
   /// `scale_value()` with the automatic scale and kept.
   Surface_report surface(double a, Surface& surface) const
   {
+    require_shape("surface");
     surface.clear();
     auto input_index = surface.template add_property_map<Surface_vertex, std::size_t>("v:input_index").first;
     Surface_report report =
@@ -307,16 +313,31 @@ public:
   and points run on its threads, with the same results. All layers are
   held at once: the overload with a `layer_done` function object gives
   each as soon as it is made.
+
+  Called on an rvalue, as in `std::move(analysis).estimate_curvatures(...)`,
+  the object is consumed: it frees its shape and its front before the
+  fits, so that they are not held with the fits' values (the job's peak
+  memory, see the manual's section "Performance"), and the values are the
+  same. Afterwards `shape()` is empty and what needs it throws
+  `std::logic_error`: `surface()`, `closing_values()`,
+  `estimate_curvatures()`, and `scale_value()` of a quantile or of an
+  automatic scale not asked for before; the other members answer as before.
   */
   std::vector<std::vector<Point_curvature<Kernel> > >
   estimate_curvatures(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
-                      Curvature_estimator estimator = QUADRIC_FIT) const
+                      Curvature_estimator estimator = QUADRIC_FIT) const &
   {
     std::vector<std::vector<Point_curvature<Kernel> > > layers(neighborhoods.size());
-    estimate_curvatures(surface, neighborhoods, estimator,
-                        [&](std::size_t k, std::vector<Point_curvature<Kernel> >&& values) {
-                          layers[k] = std::move(values);
-                        });
+    estimate_curvatures(surface, neighborhoods, estimator, keep_in(layers));
+    return layers;
+  }
+  /// the same, the object consumed (see above)
+  std::vector<std::vector<Point_curvature<Kernel> > >
+  estimate_curvatures(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
+                      Curvature_estimator estimator = QUADRIC_FIT) &&
+  {
+    std::vector<std::vector<Point_curvature<Kernel> > > layers(neighborhoods.size());
+    std::move(*this).estimate_curvatures(surface, neighborhoods, estimator, keep_in(layers));
     return layers;
   }
 
@@ -336,8 +357,42 @@ public:
   */
   template <class LayerDone>
   void estimate_curvatures(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
-                           Curvature_estimator estimator, LayerDone layer_done) const
+                           Curvature_estimator estimator, LayerDone layer_done) const &
   {
+    estimate_and_transfer(surface, neighborhoods, estimator, layer_done, []() {});
+  }
+  /// the same, the object consumed (see above)
+  template <class LayerDone>
+  void estimate_curvatures(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
+                           Curvature_estimator estimator, LayerDone layer_done) &&
+  {
+    estimate_and_transfer(surface, neighborhoods, estimator, layer_done, [this]() {
+      m_front.reset();
+      m_shape.clear();
+      m_consumed = true;
+    });
+  }
+
+private:
+  static auto keep_in(std::vector<std::vector<Point_curvature<Kernel> > >& layers)
+  {
+    return [&layers](std::size_t k, std::vector<Point_curvature<Kernel> >&& values) { layers[k] = std::move(values); };
+  }
+
+  void require_shape(const char* member) const
+  {
+    if(m_consumed)
+      throw std::logic_error(std::string("Multiscale_curvatures::") + member
+                             + ": the shape was freed by estimate_curvatures() on an rvalue");
+  }
+
+  // estimate_curvatures(), calling `before_fits()` once the shape is no
+  // longer read
+  template <class LayerDone, class BeforeFits>
+  void estimate_and_transfer(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
+                             Curvature_estimator estimator, LayerDone& layer_done, BeforeFits before_fits) const
+  {
+    require_shape("estimate_curvatures");
     // the fits and the nearest-surface search run in the working frame
     const auto working = get(CGAL::dynamic_vertex_property_t<Point>(), surface);
     for(Surface_vertex v : surface.vertices())
@@ -350,6 +405,22 @@ public:
     auto shape_index = [&](Surface_vertex v) { return m_kept_index[input_index[v]]; };
     // the centers follow the input's coordinates, which a tile of the cloud has to the bit
     auto input_key = [&](Surface_vertex v) { return m_input.key[shape_index(v)]; };
+    const auto vertex_index = CGAL::get_initialized_vertex_index_map(surface, CGAL::parameters::default_values());
+
+    // transfer_to_points() in steps: what it reads of the shape and the
+    // feet of the shape's vertices off the surface are taken before the
+    // fits, so that neither the shape nor the search tree over the faces
+    // need be held with the fits' values
+    const auto table = internal::shape_vertex_table<CGAL::Parallel_if_available_tag>(
+      m_shape, surface, boost::make_function_property_map<Surface_vertex>(shape_index), vertex_index);
+    std::vector<bool> off_surface(table.number_of_shape_vertices(), true);
+    for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
+      off_surface[v.second] = false;
+    auto feet = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working, off_surface);
+    internal::drop_far_feet(m_shape, table, feet);
+    std::vector<bool>().swap(off_surface);
+    before_fits();
+
     std::vector<std::vector<Vertex_curvature<Kernel> > > values =
       estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
         surface, in_working_frame,
@@ -357,13 +428,25 @@ public:
           parameters::fit_center_key_map(boost::make_function_property_map<Surface_vertex>(input_key),
             parameters::estimator(estimator).vertex_point_map(working)))));
 
+    // then the feet of the surface's vertices without a value in some
+    // layer: they lie on the surface, never far from it
+    std::vector<bool> needs_foot = internal::needs_foot(table, values);
+    for(const auto& foot : feet)
+      needs_foot[foot.shape_vertex] = false;
+    const auto on_surface = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working,
+                                                                                           needs_foot);
+    const std::size_t off_surface_feet = feet.size();
+    feet.insert(feet.end(), on_surface.begin(), on_surface.end());
+    std::inplace_merge(feet.begin(), feet.begin() + std::ptrdiff_t(off_surface_feet), feet.end(),
+                       [](const auto& x, const auto& y) { return x.shape_vertex < y.shape_vertex; });
+
     std::vector<Point_curvature<Kernel> > layer;
     auto hand_over = [&](std::size_t k) {
       layer_done(k, std::move(layer));
       std::vector<Point_curvature<Kernel> >().swap(layer);  // in case `layer_done` did not take it
     };
-    transfer_to_points<CGAL::Parallel_if_available_tag>(
-      m_shape, surface, values,
+    internal::write_at_points<CGAL::Parallel_if_available_tag>(
+      table, surface, working, vertex_index, values, feet,
       [&](std::size_t k) {
         // asked for layer k once layer k - 1 is written, and before the
         // vertex values of layer k are freed: the surface's properties
@@ -375,13 +458,11 @@ public:
         layer.resize(number_of_input_points());
         return internal::Input_units_writer<Kernel>{&m_input, &layer};
       },
-      parameters::vertex_input_index_map(boost::make_function_property_map<Surface_vertex>(shape_index),
-        parameters::reference_normals(std::cref(m_reference_normals)).vertex_point_map(working)));
+      m_reference_normals);
     if(!values.empty())
       hand_over(values.size() - 1);
   }
 
-private:
   // The front grown with no bound, once.
   const Surface_front<Shape>& front() const
   {
@@ -426,6 +507,7 @@ private:
   Denoising_plan m_denoising;
   mutable double m_suggested = -1;
   mutable std::unique_ptr<Surface_front<Shape> > m_front;  // see front()
+  bool m_consumed = false;  // see estimate_curvatures()
 };
 
 /*!

@@ -6,6 +6,7 @@
 
 #include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/input_index_table.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/sample_spacing.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 
@@ -201,6 +202,162 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
   return record(NEAREST_SURFACE_POINT, c.distance, r, vector(n), max_k, min_k, vector(max_d), vector(n.cross(max_d)));
 }
 
+// What the transfer reads of the shape, taken from it at once, so that a
+// caller may free the shape before the values are written
+// (`Multiscale_curvatures` does when it is consumed).
+template <class Point>
+struct Shape_vertex_table
+{
+  // per surface vertex, in the order of vertices(pmesh): its index in the
+  // layers and its shape vertex (by vertex index)
+  std::vector<std::pair<std::size_t, std::size_t> > index_and_shape_vertex;
+  std::vector<Point> points;        // by vertex index
+  Input_index_table input_indices;  // by vertex index
+
+  std::size_t number_of_shape_vertices() const { return points.size(); }
+};
+
+// The table of `cas` and its surface `pmesh` (on TBB's threads as the tag
+// says: each surface vertex's shape vertex is a walk through its input index).
+template <class ConcurrencyTag, class Cas, class PolygonMesh, class InputIndexMap, class VertexIndexMap>
+Shape_vertex_table<typename Cas::Point> shape_vertex_table(const Cas& cas, const PolygonMesh& pmesh,
+                                                           const InputIndexMap& input_index,
+                                                           const VertexIndexMap& vertex_index)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  Shape_vertex_table<typename Cas::Point> table;
+  const std::vector<vertex_descriptor> surface_vertices(vertices(pmesh).first, vertices(pmesh).second);
+  table.index_and_shape_vertex.resize(surface_vertices.size());
+  for_each_index<ConcurrencyTag>(surface_vertices.size(), []() { return 0; }, [&](std::size_t k, int&) {
+    const vertex_descriptor v = surface_vertices[k];
+    table.index_and_shape_vertex[k] = std::make_pair(std::size_t(get(vertex_index, v)),
+                                                     std::size_t(cas.input_vertex(get(input_index, v))->vertex_index()));
+  });
+  table.points.resize(cas.number_of_vertices());
+  for(const typename Cas::Vertex_handle v : cas.finite_vertex_handles())
+    table.points[v->vertex_index()] = v->point();
+  std::vector<std::size_t> vertex_of_input(cas.number_of_input_points());
+  for_each_index<ConcurrencyTag>(vertex_of_input.size(), []() { return 0; }, [&](std::size_t i, int&) {
+    vertex_of_input[i] = cas.input_vertex(i)->vertex_index();
+  });
+  table.input_indices.assign(vertex_of_input, cas.number_of_vertices());
+  return table;
+}
+
+// For every vertex of the shape (by vertex index), the surface vertex whose
+// value in `values` it takes: its own first; at a pinch, the first one
+// whose value is defined; none (-1) when none is.
+template <class Point, class Value>
+std::vector<std::size_t> own_vertices(const Shape_vertex_table<Point>& table, const std::vector<Value>& values)
+{
+  std::vector<std::size_t> own(table.number_of_shape_vertices(), std::size_t(-1));
+  for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
+  {
+    std::size_t& o = own[v.second];
+    if(o == std::size_t(-1) && values[v.first].is_defined())
+      o = v.first;
+  }
+  return own;
+}
+
+// Whether each vertex of the shape (by vertex index) takes its value from
+// its foot on the surface in some layer of `layers`.
+template <class Point, class Value>
+std::vector<bool> needs_foot(const Shape_vertex_table<Point>& table, const std::vector<std::vector<Value> >& layers)
+{
+  std::vector<bool> needs(table.number_of_shape_vertices(), false);
+  for(const std::vector<Value>& values : layers)
+  {
+    const std::vector<std::size_t> own = own_vertices(table, values);
+    for(std::size_t v = 0; v < own.size(); ++v)
+      if(own[v] == std::size_t(-1))
+        needs[v] = true;
+  }
+  return needs;
+}
+
+// The feet on `pmesh` of the shape's vertices that `needs` flags, sorted by
+// vertex, none far (see drop_far_feet()); none when `pmesh` is empty. A
+// vertex's foot does not depend on which others are searched with it; the
+// search tree over the faces is freed on return.
+template <class ConcurrencyTag, class GT, class PolygonMesh, class VertexPointMap>
+std::vector<Surface_foot<typename GT::Point_3, typename boost::graph_traits<PolygonMesh>::face_descriptor> >
+surface_feet(const Shape_vertex_table<typename GT::Point_3>& table, const PolygonMesh& pmesh,
+             const VertexPointMap& vpm, const std::vector<bool>& needs)
+{
+  typedef typename GT::Point_3 Point;
+  typedef Surface_foot<Point, typename boost::graph_traits<PolygonMesh>::face_descriptor> Foot;
+  std::vector<Foot> feet;
+  if(CGAL::is_empty(pmesh))
+    return feet;
+  std::vector<std::size_t> footless;
+  for(std::size_t v = 0; v < needs.size(); ++v)
+    if(needs[v])
+      footless.push_back(v);
+  if(footless.empty())
+    return feet;
+  typedef CGAL::AABB_face_graph_triangle_primitive<PolygonMesh, VertexPointMap> Primitive;
+  CGAL::AABB_tree<CGAL::AABB_traits<GT, Primitive> > tree;
+  tree.insert(faces(pmesh).first, faces(pmesh).second, pmesh, vpm);
+  // the search tree of the faces in their order, then the hierarchy,
+  // which sorts them: where several faces are nearest, the one found
+  // depends on that order
+  tree.accelerate_distance_queries();
+  tree.build();
+  feet.resize(footless.size());
+  for_each_index<ConcurrencyTag>(footless.size(), []() { return 0; }, [&](std::size_t k, int&) {
+    const Point& p = table.points[footless[k]];
+    const auto nearest = tree.closest_point_and_primitive(p);
+    feet[k] = Foot{footless[k], nearest.first, nearest.second,
+                   std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)))};
+  });
+  return feet;
+}
+
+// Makes the feet farther than `far_from_surface()` local spacings of their
+// vertex in `cas` none, serially (CGAL's walks over the shape mark the
+// vertices they visit).
+template <class Cas, class Foot>
+void drop_far_feet(const Cas& cas, const Shape_vertex_table<typename Cas::Point>& table, std::vector<Foot>& feet)
+{
+  typedef Local_feature_size_policy Policy;
+  for(Foot& foot : feet)
+    if(foot.distance > far_from_surface()
+                         * kth_shortest_edge_length<Policy::spacing_edge_rank>(
+                             cas, cas.input_vertex(*table.input_indices.of_vertex(foot.shape_vertex).begin())))
+      foot.face = decltype(foot.face)();
+}
+
+// Writes the layers' values at the input points (see transfer_to_points()),
+// given the feet of every vertex that needs_foot() flags, sorted by vertex.
+template <class ConcurrencyTag, class GT, class PolygonMesh, class VertexPointMap, class VertexIndexMap,
+          class Foot, class PointCurvatureMaps, class NormalRange>
+void write_at_points(const Shape_vertex_table<typename GT::Point_3>& table, const PolygonMesh& pmesh,
+                     const VertexPointMap& vpm, const VertexIndexMap& vertex_index,
+                     std::vector<std::vector<Vertex_curvature<GT> > >& layers, const std::vector<Foot>& feet,
+                     PointCurvatureMaps point_curvatures, const NormalRange& reference_normals)
+{
+  // vertex by vertex of the shape, whose order the surface's follows: the
+  // reads are then in memory order, one scattered store per point
+  for(std::size_t k = 0; k < layers.size(); ++k)
+  {
+    const std::vector<Vertex_curvature<GT> >& values = layers[k];
+    const std::vector<std::size_t> own = own_vertices(table, values);
+    const auto point_map = point_curvatures(k);
+    for_each_index<ConcurrencyTag>(own.size(), []() { return 0; }, [&](std::size_t v, int&) {
+      const Point_curvature<GT> value = value_at_vertex<GT>(v, own[v], pmesh, vpm, vertex_index, values, feet);
+      for(const std::size_t i : table.input_indices.of_vertex(v))
+      {
+        Point_curvature<GT> c = value;
+        if(!reference_normals.empty() && c.normal * reference_normals[i] < 0)
+          take_other_side(c);
+        put(point_map, i, c);
+      }
+    });
+    std::vector<Vertex_curvature<GT> >().swap(layers[k]);
+  }
+}
+
 } // namespace internal
 
 /*!
@@ -265,128 +422,24 @@ void transfer_to_points(const ConformalAlphaShape& cas, const PolygonMesh& pmesh
                         PointCurvatureMaps point_curvatures,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  typedef ConformalAlphaShape Cas;
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
-  typedef typename GT::Point_3 Point;
-  typedef internal::Surface_foot<Point, face_descriptor> Foot;
-  typedef Vertex_curvature<GT> Value;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   static_assert(!CGAL::parameters::is_default_parameter<NamedParameters,
                                                         internal_np_cas3::vertex_input_index_map_t>::value,
                 "transfer_to_points needs the named parameter vertex_input_index_map");
-  const auto input_index = get_parameter(np, internal_np_cas3::vertex_input_index_map);
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, pmesh));
   const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
   const std::vector<typename GT::Vector_3> no_normals;
-  const auto& reference_normals = choose_parameter(
-    CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals);
-
-  // the index and the shape vertex of each surface vertex, in the order of
-  // vertices(pmesh): found once (on TBB's threads), since each is a walk
-  // through the input index to a vertex handle
-  std::vector<vertex_descriptor> surface_vertices(vertices(pmesh).first, vertices(pmesh).second);
-  std::vector<std::pair<std::size_t, std::size_t> > index_and_shape_vertex(surface_vertices.size());
-  internal::for_each_index<ConcurrencyTag>(surface_vertices.size(), []() { return 0; }, [&](std::size_t k, int&) {
-    const vertex_descriptor v = surface_vertices[k];
-    index_and_shape_vertex[k] = std::make_pair(std::size_t(get(vertex_index, v)),
-                                               std::size_t(cas.input_vertex(get(input_index, v))->vertex_index()));
-  });
-  std::vector<vertex_descriptor>().swap(surface_vertices);
-
-  // for every vertex of the shape (by vertex index), the surface vertex whose
-  // value it takes: its own first; at a pinch, the first one whose value is
-  // defined; none when none is
-  const std::size_t none = std::size_t(-1);
-  auto own_vertices = [&](const std::vector<Value>& values) {
-    std::vector<std::size_t> own(cas.number_of_vertices(), none);
-    for(const std::pair<std::size_t, std::size_t>& v : index_and_shape_vertex)
-    {
-      std::size_t& o = own[v.second];
-      if(o == none && values[v.first].is_defined())
-        o = v.first;
-    }
-    return own;
-  };
-
-  // the feet of the shape's vertices without a value of their own in some
-  // layer, found once for all layers, so that the search tree over the
-  // surface's faces is freed before the values are written
-  std::vector<Foot> feet;
-  if(!CGAL::is_empty(pmesh))
-  {
-    std::vector<bool> needs_foot(cas.number_of_vertices(), false);
-    for(const std::vector<Value>& values : layers)
-    {
-      const std::vector<std::size_t> own = own_vertices(values);
-      for(std::size_t v = 0; v < own.size(); ++v)
-        if(own[v] == none)
-          needs_foot[v] = true;
-    }
-    std::vector<typename Cas::Vertex_handle> footless;
-    for(std::size_t i = 0; i < cas.number_of_input_points(); ++i)
-    {
-      const typename Cas::Vertex_handle v = cas.input_vertex(i);
-      if(needs_foot[v->vertex_index()])
-      {
-        needs_foot[v->vertex_index()] = false;
-        footless.push_back(v);
-      }
-    }
-    if(!footless.empty())
-    {
-      typedef CGAL::AABB_face_graph_triangle_primitive<PolygonMesh, std::remove_const_t<decltype(vpm)> > Primitive;
-      CGAL::AABB_tree<CGAL::AABB_traits<GT, Primitive> > tree;
-      tree.insert(faces(pmesh).first, faces(pmesh).second, pmesh, vpm);
-      // the search tree of the faces in their order, then the hierarchy,
-      // which sorts them: where several faces are nearest, the one found
-      // depends on that order
-      tree.accelerate_distance_queries();
-      tree.build();
-      feet.resize(footless.size());
-      internal::for_each_index<ConcurrencyTag>(footless.size(), []() { return 0; }, [&](std::size_t k, int&) {
-        const Point& p = footless[k]->point();
-        const auto nearest = tree.closest_point_and_primitive(p);
-        feet[k] = Foot{footless[k]->vertex_index(), nearest.first, nearest.second,
-                       std::sqrt(CGAL::to_double(CGAL::squared_distance(p, nearest.first)))};
-      });
-      // serially: CGAL's walks over the shape mark the vertices they visit
-      typedef internal::Local_feature_size_policy Policy;
-      for(std::size_t k = 0; k < feet.size(); ++k)
-        if(feet[k].distance
-           > far_from_surface() * internal::kth_shortest_edge_length<Policy::spacing_edge_rank>(cas, footless[k]))
-          feet[k].face = face_descriptor();
-      std::sort(feet.begin(), feet.end(),
-                [](const Foot& x, const Foot& y) { return x.shape_vertex < y.shape_vertex; });
-    }
-  }
-
-  // the values are written vertex by vertex of the shape, whose order the
-  // surface's follows: the reads are then in memory order, one scattered
-  // store per point
-  std::vector<typename Cas::Vertex_handle> shape_vertex(cas.number_of_vertices());  // by vertex index
-  for(const typename Cas::Vertex_handle v : cas.finite_vertex_handles())
-    shape_vertex[v->vertex_index()] = v;
-  for(std::size_t k = 0; k < layers.size(); ++k)
-  {
-    const std::vector<Value>& values = layers[k];
-    const std::vector<std::size_t> own = own_vertices(values);
-    const auto point_map = point_curvatures(k);
-    internal::for_each_index<ConcurrencyTag>(shape_vertex.size(), []() { return 0; }, [&](std::size_t v, int&) {
-      const Point_curvature<GT> value =
-        internal::value_at_vertex<GT>(v, own[v], pmesh, vpm, vertex_index, values, feet);
-      for(const std::size_t i : cas.input_indices(shape_vertex[v]))
-      {
-        Point_curvature<GT> c = value;
-        if(!reference_normals.empty() && c.normal * reference_normals[i] < 0)
-          internal::take_other_side(c);
-        put(point_map, i, c);
-      }
-    });
-    std::vector<Value>().swap(layers[k]);
-  }
+  const auto table = internal::shape_vertex_table<ConcurrencyTag>(
+    cas, pmesh, get_parameter(np, internal_np_cas3::vertex_input_index_map), vertex_index);
+  // the feet are found once for all layers, so that the search tree over
+  // the surface's faces is freed before the values are written
+  auto feet = internal::surface_feet<ConcurrencyTag, GT>(table, pmesh, vpm, internal::needs_foot(table, layers));
+  internal::drop_far_feet(cas, table, feet);
+  internal::write_at_points<ConcurrencyTag>(
+    table, pmesh, vpm, vertex_index, layers, feet, point_curvatures,
+    choose_parameter(CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals));
 }
 
 } // namespace Conformal_alpha_shapes_3

@@ -36,8 +36,8 @@ public:
 
   void clear()
   {
-    m_offsets.clear();
-    m_indices.clear();
+    std::vector<std::size_t>().swap(m_offsets);
+    std::vector<std::size_t>().swap(m_indices);
   }
 
   Range of_vertex(std::size_t v) const
