@@ -407,19 +407,20 @@ private:
     auto input_key = [&](Surface_vertex v) { return m_input.key[shape_index(v)]; };
     const auto vertex_index = CGAL::get_initialized_vertex_index_map(surface, CGAL::parameters::default_values());
 
-    // transfer_to_points() in steps: what it reads of the shape and the
-    // feet of the shape's vertices off the surface are taken before the
-    // fits, so that neither the shape nor the search tree over the faces
-    // need be held with the fits' values
+    // transfer_to_points() in steps: what it reads of the shape is taken
+    // first (so that the shape may be freed), then the feet of the shape's
+    // vertices off the surface are found before the fits, so that the
+    // search tree over the faces is not held with the fits' values
     const auto table = internal::shape_vertex_table<CGAL::Parallel_if_available_tag>(
       m_shape, surface, boost::make_function_property_map<Surface_vertex>(shape_index), vertex_index);
     std::vector<bool> off_surface(table.number_of_shape_vertices(), true);
     for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
       off_surface[v.second] = false;
-    auto feet = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working, off_surface);
-    internal::drop_far_feet(m_shape, table, feet);
-    std::vector<bool>().swap(off_surface);
+    const std::vector<double> far = internal::far_distances(m_shape, table, off_surface);
     before_fits();
+    auto feet = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working, off_surface);
+    internal::drop_far_feet(feet, far);
+    std::vector<bool>().swap(off_surface);
 
     std::vector<std::vector<Vertex_curvature<Kernel> > > values =
       estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(

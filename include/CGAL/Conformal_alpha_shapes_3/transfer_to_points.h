@@ -314,18 +314,32 @@ surface_feet(const Shape_vertex_table<typename GT::Point_3>& table, const Polygo
   return feet;
 }
 
-// Makes the feet farther than `far_from_surface()` local spacings of their
-// vertex in `cas` none, serially (CGAL's walks over the shape mark the
+// For each vertex that `needs` flags (by increasing vertex index), the
+// distance beyond which it is far from the surface: `far_from_surface()`
+// local spacings in `cas`, serially (CGAL's walks over the shape mark the
 // vertices they visit).
-template <class Cas, class Foot>
-void drop_far_feet(const Cas& cas, const Shape_vertex_table<typename Cas::Point>& table, std::vector<Foot>& feet)
+template <class Cas>
+std::vector<double> far_distances(const Cas& cas, const Shape_vertex_table<typename Cas::Point>& table,
+                                  const std::vector<bool>& needs)
 {
   typedef Local_feature_size_policy Policy;
-  for(Foot& foot : feet)
-    if(foot.distance > far_from_surface()
-                         * kth_shortest_edge_length<Policy::spacing_edge_rank>(
-                             cas, cas.input_vertex(*table.input_indices.of_vertex(foot.shape_vertex).begin())))
-      foot.face = decltype(foot.face)();
+  std::vector<double> far;
+  for(std::size_t v = 0; v < needs.size(); ++v)
+    if(needs[v])
+      far.push_back(far_from_surface()
+                    * kth_shortest_edge_length<Policy::spacing_edge_rank>(
+                        cas, cas.input_vertex(*table.input_indices.of_vertex(v).begin())));
+  return far;
+}
+
+// Makes none the feet (from surface_feet()) beyond their vertex's distance
+// in `far` (from far_distances(), of the same vertices).
+template <class Foot>
+void drop_far_feet(std::vector<Foot>& feet, const std::vector<double>& far)
+{
+  for(std::size_t k = 0; k < feet.size(); ++k)
+    if(feet[k].distance > far[k])
+      feet[k].face = decltype(feet[k].face)();
 }
 
 // Writes the layers' values at the input points (see transfer_to_points()),
@@ -435,8 +449,9 @@ void transfer_to_points(const ConformalAlphaShape& cas, const PolygonMesh& pmesh
     cas, pmesh, get_parameter(np, internal_np_cas3::vertex_input_index_map), vertex_index);
   // the feet are found once for all layers, so that the search tree over
   // the surface's faces is freed before the values are written
-  auto feet = internal::surface_feet<ConcurrencyTag, GT>(table, pmesh, vpm, internal::needs_foot(table, layers));
-  internal::drop_far_feet(cas, table, feet);
+  const std::vector<bool> needs_foot = internal::needs_foot(table, layers);
+  auto feet = internal::surface_feet<ConcurrencyTag, GT>(table, pmesh, vpm, needs_foot);
+  internal::drop_far_feet(feet, internal::far_distances(cas, table, needs_foot));
   internal::write_at_points<ConcurrencyTag>(
     table, pmesh, vpm, vertex_index, layers, feet, point_curvatures,
     choose_parameter(CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals));
