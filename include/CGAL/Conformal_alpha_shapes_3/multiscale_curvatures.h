@@ -591,18 +591,21 @@ multiscale_curvatures(const PointRange& points, const NamedParameters& np = CGAL
     choose_parameter(get_parameter(np, internal_np_cas3::neighborhoods), default_neighborhoods());
   const Curvature_estimator estimator = choose_parameter(get_parameter(np, internal_np_cas3::estimator), QUADRIC_FIT);
 
-  const Multiscale_curvatures<Kernel> analysis(points.begin(), points.end(), np);
+  Multiscale_curvatures<Kernel> analysis(points.begin(), points.end(), np);
   std::vector<Curvature_layer<Kernel> > layers;
   for(const Scale& scale : scales)
   {
     typename Multiscale_curvatures<Kernel>::Surface surface;
     const double a = analysis.scale_value(scale);
     const Surface_report report = analysis.surface(a, surface);
-    analysis.estimate_curvatures(surface, neighborhoods, estimator,
-                                 [&](std::size_t k, std::vector<Point_curvature<Kernel> >&& values) {
-                                   layers.push_back(
-                                     Curvature_layer<Kernel>{scale, a, neighborhoods[k], report, std::move(values)});
-                                 });
+    auto layer_done = [&](std::size_t k, std::vector<Point_curvature<Kernel> >&& values) {
+      layers.push_back(Curvature_layer<Kernel>{scale, a, neighborhoods[k], report, std::move(values)});
+    };
+    // the shape is freed before the last scale's fits
+    if(&scale == &scales.back())
+      std::move(analysis).estimate_curvatures(surface, neighborhoods, estimator, layer_done);
+    else
+      analysis.estimate_curvatures(surface, neighborhoods, estimator, layer_done);
   }
   return layers;
 }
