@@ -730,6 +730,30 @@ private:
            && is_exterior(rank(c, (i + 3) & 3));
   }
 
+  // `visit(c, i, facet, partial)` for every finite facet (c, i), each once
+  // from its cell of smaller index (`facet` = 4 c->cell_index() + i), in
+  // chunks of cells side by side on TBB's threads, each chunk into a
+  // partial result of its own from `make()`: the partial results in the
+  // chunks' order.
+  template <class MakePartial, class Visit>
+  std::vector<decltype(std::declval<MakePartial&>()())> finite_facets_in_chunks(MakePartial make, Visit visit)
+  {
+    auto partial = partial_results_in_chunks<Parallel_if_available_tag>(
+      cells_by_index.size(), make, [&](std::size_t begin, std::size_t end, auto& chunk) {
+        for(std::size_t k = begin; k < end; ++k)
+        {
+          if((k - begin) % 4096 == 0 && interruption.stop_requested())
+            return;
+          const Cell_handle c = cells_by_index[k];
+          for(int i = 0; i < 4; ++i)
+            if(k < c->neighbor(i)->cell_index() && !cas.is_infinite(c, i))
+              visit(c, i, 4 * std::uint64_t(k) + std::uint64_t(i), chunk);
+        }
+      });
+    interruption.throw_if_stop_was_requested();
+    return partial;
+  }
+
   bool init(bool re_init)
   {
     Cell_handle min_c;
@@ -747,24 +771,12 @@ private:
         double value;
         std::uint64_t facet;
       };
-      const std::vector<Best> best = partial_results_in_chunks<Parallel_if_available_tag>(
-        cells_by_index.size(), [&]() { return Best{infinity, 0}; },
-        [&](std::size_t begin, std::size_t end, Best& chunk) {
-          for(std::size_t k = begin; k < end; ++k)
-          {
-            if((k - begin) % 4096 == 0 && interruption.stop_requested())
-              return;
-            const Cell_handle c = cells_by_index[k];
-            for(int i = 0; i < 4; ++i)
-              if(k < c->neighbor(i)->cell_index() && !cas.is_infinite(c, i))
-              {
-                const double value = facet_priority(c, i);
-                if(value < chunk.value)
-                  chunk = Best{value, 4 * std::uint64_t(k) + std::uint64_t(i)};
-              }
-          }
+      const std::vector<Best> best = finite_facets_in_chunks(
+        [&]() { return Best{infinity, 0}; }, [&](Cell_handle c, int i, std::uint64_t facet, Best& chunk) {
+          const double value = facet_priority(c, i);
+          if(value < chunk.value)
+            chunk = Best{value, facet};
         });
-      interruption.throw_if_stop_was_requested();
       for(const Best& chunk : best)
         if(chunk.value < min_value)
         {
@@ -784,24 +796,14 @@ private:
         seeds_ready = true;
         // listed in chunks of cells side by side, then sorted
         typedef std::vector<std::pair<double, std::uint64_t> > Seeds;
-        const std::vector<Seeds> chunks = partial_results_in_chunks<Parallel_if_available_tag>(
-          cells_by_index.size(), []() { return Seeds(); },
-          [&](std::size_t begin, std::size_t end, Seeds& chunk) {
-            for(std::size_t k = begin; k < end; ++k)
-            {
-              if((k - begin) % 4096 == 0 && interruption.stop_requested())
-                return;
-              const Cell_handle c = cells_by_index[k];
-              for(int i = 0; i < 4; ++i)
-                if(k < c->neighbor(i)->cell_index() && !cas.is_infinite(c, i) && all_exterior(c, i))
-                {
-                  const double value = facet_priority(c, i);
-                  if(value != infinity)
-                    chunk.emplace_back(value, 4 * std::uint64_t(k) + std::uint64_t(i));
-                }
-            }
+        const std::vector<Seeds> chunks = finite_facets_in_chunks(
+          []() { return Seeds(); }, [&](Cell_handle c, int i, std::uint64_t facet, Seeds& chunk) {
+            if(!all_exterior(c, i))
+              return;
+            const double value = facet_priority(c, i);
+            if(value != infinity)
+              chunk.emplace_back(value, facet);
           });
-        interruption.throw_if_stop_was_requested();
         for(const Seeds& chunk : chunks)
           seeds.insert(seeds.end(), chunk.begin(), chunk.end());
         sort_distinct<Parallel_if_available_tag>(seeds.begin(), seeds.end(), std::less<>());
