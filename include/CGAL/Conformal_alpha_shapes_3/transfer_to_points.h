@@ -277,9 +277,9 @@ std::vector<bool> needs_foot(const Shape_vertex_table<Point>& table, const std::
 }
 
 // The feet on `pmesh` of the shape's vertices that `needs` flags, sorted by
-// vertex, none far (see drop_far_feet()); none when `pmesh` is empty. A
-// vertex's foot does not depend on which others are searched with it; the
-// search tree over the faces is freed on return.
+// vertex (the far ones are dropped by drop_far_feet()); none when `pmesh`
+// is empty. A vertex's foot does not depend on which others are searched
+// with it; the search tree over the faces is freed on return.
 template <class ConcurrencyTag, class GT, class PolygonMesh, class VertexPointMap>
 std::vector<Surface_foot<typename GT::Point_3, typename boost::graph_traits<PolygonMesh>::face_descriptor> >
 surface_feet(const Shape_vertex_table<typename GT::Point_3>& table, const PolygonMesh& pmesh,
