@@ -11,11 +11,11 @@
 #include <CGAL/Conformal_alpha_shapes_3/scales_and_neighborhoods.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/Euler_operations.h>
 
 #include "cas3_analytic_surfaces.h"
 #include "cas3_jet_fitting.h"
 #include "cas3_point_values.h"
+#include "cas3_test_meshes.h"
 #include "cas3_test_shapes.h"
 #include "cas3_test_types.h"
 
@@ -366,19 +366,6 @@ BOOST_AUTO_TEST_CASE(a_consumed_analysis_gives_the_same_values)
 {
   Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(3000, 1, 0.7, 0.4);
   cas3_analytic::add_normal_noise(s, 0.3, 7);
-  auto remove_cap = [](Analysis::Surface& surface) {
-    std::vector<Analysis::Surface::Face_index> cap;
-    for(auto f : surface.faces())
-      for(auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
-        if(surface.point(v).z() > 0.3)
-        {
-          cap.push_back(f);
-          break;
-        }
-    for(auto f : cap)
-      CGAL::Euler::remove_face(surface.halfedge(f), surface);
-    surface.collect_garbage();
-  };
   const std::vector<CAS3::Neighborhood> neighborhoods{
     CAS3::Neighborhood::automatic(), CAS3::Neighborhood::spacings(0.5), CAS3::Neighborhood::spacings(4)};
   const Analysis kept(s.points.begin(), s.points.end());
@@ -388,8 +375,8 @@ BOOST_AUTO_TEST_CASE(a_consumed_analysis_gives_the_same_values)
   Analysis::Surface kept_surface, consumed_surface;
   kept.surface(a, kept_surface);
   consumed.surface(a, consumed_surface);
-  remove_cap(kept_surface);
-  remove_cap(consumed_surface);
+  cas3_test::remove_cap_above(kept_surface, 0.3);
+  cas3_test::remove_cap_above(consumed_surface, 0.3);
   const auto expected = kept.estimate_curvatures(kept_surface, neighborhoods);
   const auto layers = std::move(consumed).estimate_curvatures(consumed_surface, neighborhoods);
   for(std::size_t l = 0; l < neighborhoods.size(); ++l)

@@ -7,10 +7,10 @@
 #include <CGAL/Conformal_alpha_shapes_3/transfer_to_points.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include "cas3_point_values.h"
+#include "cas3_test_meshes.h"
 #include "cas3_test_shapes.h"
 #include "cas3_test_types.h"
 
@@ -40,18 +40,7 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
   const Analysis analysis(pts.begin(), pts.end());
   Analysis::Surface surface;
   analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
-  // remove the cap z > 0.8 from the surface
-  std::vector<Analysis::Surface::Face_index> cap;
-  for(auto f : surface.faces())
-    for(auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
-      if(surface.point(v).z() > 0.8)
-      {
-        cap.push_back(f);
-        break;
-      }
-  for(auto f : cap)
-    CGAL::Euler::remove_face(surface.halfedge(f), surface);
-  surface.collect_garbage();
+  cas3_test::remove_cap_above(surface, 0.8);
 
   const std::vector<CAS3::Point_curvature<K> > c =
     analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();

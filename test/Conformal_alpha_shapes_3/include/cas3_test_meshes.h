@@ -3,6 +3,7 @@
 #define CAS3_TEST_MESHES_H
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
@@ -195,6 +196,24 @@ Curvature_errors curvature_errors(const MeshWithTruth& s, const std::vector<doub
     return v.empty() ? NAN : v[std::size_t(q * double(v.size() - 1))];
   };
   return {quantile(eh, 0.5), quantile(eh, 0.9), quantile(ek, 0.5), quantile(ek, 0.9)};
+}
+
+// Removes the faces of `surface` (a Surface_mesh) with a vertex above
+// height `z`: a cap cut off, so that the points under it are off the surface.
+template <class SurfaceMesh>
+void remove_cap_above(SurfaceMesh& surface, double z)
+{
+  std::vector<typename SurfaceMesh::Face_index> cap;
+  for(auto f : surface.faces())
+    for(auto v : CGAL::vertices_around_face(surface.halfedge(f), surface))
+      if(surface.point(v).z() > z)
+      {
+        cap.push_back(f);
+        break;
+      }
+  for(auto f : cap)
+    CGAL::Euler::remove_face(surface.halfedge(f), surface);
+  surface.collect_garbage();
 }
 
 } // namespace cas3_test
