@@ -11,6 +11,12 @@
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
@@ -85,7 +91,7 @@ namespace output_detail {
 
 // What the two binary little-endian PLY files share: the header's start
 // with its comments and a comment line per layer, the float properties of
-// a layer's values, and the rows, written in blocks of about a megabyte.
+// a layer's values, and the rows, of a fixed size each, made side by side.
 inline void put_header_start(std::ostream& header, std::initializer_list<const char*> comments,
                              const Layer* first, const Layer* last)
 {
@@ -128,20 +134,18 @@ inline void append(std::string& out, double x)
   out.append(buffer, r.ptr);
 }
 
-class Row_writer
+class Row_cursor
 {
 public:
-  explicit Row_writer(std::ostream& out) : m_out(out) {}
-  ~Row_writer() { write(); }
+  explicit Row_cursor(char* p) : m_p(p) {}
 
   template <class T>
   void put(T x)
   {
     static_assert(std::is_arithmetic<T>::value, "a number");
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &x, sizeof(T));
     // the platforms of these programs are little-endian; the header says so
-    m_block.append(bytes, sizeof(T));
+    std::memcpy(m_p, &x, sizeof(T));
+    m_p += sizeof(T);
   }
   template <class Point>
   void put_position(const Point& p)
@@ -155,21 +159,42 @@ public:
     for(int j = 0; j < Layer::number_of_values; ++j)
       put(layer.values[i * Layer::number_of_values + std::size_t(j)]);
   }
-  void end_row()
-  {
-    if(m_block.size() > (1u << 20))
-      write();
-  }
+  const char* position() const { return m_p; }
 
 private:
-  void write()
-  {
-    m_out.write(m_block.data(), std::streamsize(m_block.size()));
-    m_block.clear();
-  }
-  std::ostream& m_out;
-  std::string m_block;
+  char* m_p;
 };
+
+// Writes rows 0 to n - 1 of `row_size` bytes each, in order, `put_row(i,
+// row)` putting row i at a cursor: in batches of about 16 MB whose rows are
+// made on TBB's threads (with CGAL_LINKED_WITH_TBB), each at its place, so
+// that the bytes are those of one thread.
+template <class PutRow>
+void write_rows(std::ostream& out, std::size_t n, std::size_t row_size, PutRow put_row)
+{
+  const std::size_t batch = (std::max)(std::size_t(1), (std::size_t(16) << 20) / row_size);
+  std::vector<char> bytes;
+  for(std::size_t first = 0; first < n; first += batch)
+  {
+    const std::size_t count = (std::min)(batch, n - first);
+    bytes.resize(count * row_size);
+    auto make = [&](std::size_t k) {
+      Row_cursor row(bytes.data() + k * row_size);
+      put_row(first + k, row);
+      CGAL_assertion(row.position() == bytes.data() + (k + 1) * row_size);
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t k = r.begin(); k != r.end(); ++k)
+        make(k);
+    });
+#else
+    for(std::size_t k = 0; k < count; ++k)
+      make(k);
+#endif
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+  }
+}
 
 } // namespace output_detail
 
@@ -193,18 +218,16 @@ void write_point_cloud(std::ostream& out, const std::vector<Point>& points, cons
   }
   header << "end_header\n";
   out << header.str();
-  output_detail::Row_writer rows(out);
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    rows.put_position(points[i]);
-    rows.put(std::uint8_t(outlier[i] ? 1 : 0));
+  const std::size_t row_size = 3 * sizeof(double) + 1 + layers.size() * (Layer::number_of_values * sizeof(float) + 1);
+  output_detail::write_rows(out, points.size(), row_size, [&](std::size_t i, output_detail::Row_cursor& row) {
+    row.put_position(points[i]);
+    row.put(std::uint8_t(outlier[i] ? 1 : 0));
     for(const Layer& layer : layers)
     {
-      rows.put_values(layer, i);
-      rows.put(layer.source[i]);
+      row.put_values(layer, i);
+      row.put(layer.source[i]);
     }
-    rows.end_row();
-  }
+  });
 }
 
 // The surface of one scale: binary little-endian PLY, each vertex at its
@@ -219,10 +242,10 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
 {
   typedef typename Surface::Vertex_index Vertex;
   const auto input_index = surface.template property_map<Vertex, std::size_t>("v:input_index").first;
+  const std::vector<Vertex> written(surface.vertices().begin(), surface.vertices().end());
   std::vector<std::uint32_t> number(surface.num_vertices());  // by vertex, in the order written
-  std::uint32_t next = 0;
-  for(Vertex v : surface.vertices())
-    number[v] = next++;
+  for(std::size_t k = 0; k < written.size(); ++k)
+    number[written[k]] = std::uint32_t(k);
 
   struct First_layer_H
   {
@@ -246,40 +269,35 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
          << "element face " << surface.number_of_faces() << "\n"
          << "property list uchar int vertex_indices\nend_header\n";
   out << header.str();
-  output_detail::Row_writer rows(out);
   // the rows are read by input index, out of memory order: each vertex asks
-  // for the rows of the one 16 places later, `lead`, so that they are in
-  // the caches when their turn comes
-  const auto written = surface.vertices();
-  auto lead = written.begin();
-  for(int ahead = 0; ahead < 16 && lead != written.end(); ++ahead)
-    ++lead;
-  for(Vertex v : written)
-  {
-    if(lead != written.end())
+  // for the rows of the one 16 places later, so that they are in the
+  // caches when their turn comes
+  const std::size_t vertex_row = 3 * sizeof(double) + sizeof(std::uint32_t)
+                                 + std::size_t(last - first) * Layer::number_of_values * sizeof(float) + 4;
+  output_detail::write_rows(out, written.size(), vertex_row, [&](std::size_t k, output_detail::Row_cursor& row) {
+    if(k + 16 < written.size())
     {
-      const std::size_t later = input_index[*lead++];
+      const std::size_t later = input_index[written[k + 16]];
       output_detail::prefetch(&points[later]);
       for(const Layer* layer = first; layer != last; ++layer)
         output_detail::prefetch_values(*layer, later);
     }
-    const std::size_t i = input_index[v];
-    rows.put_position(points[i]);
-    rows.put(std::uint32_t(i));
+    const std::size_t i = input_index[written[k]];
+    row.put_position(points[i]);
+    row.put(std::uint32_t(i));
     for(const Layer* layer = first; layer != last; ++layer)
-      rows.put_values(*layer, i);
-    const CGAL::IO::Color& c = color[v];
+      row.put_values(*layer, i);
+    const CGAL::IO::Color& c = color[written[k]];
     for(unsigned char channel : {c.red(), c.green(), c.blue(), c.alpha()})
-      rows.put(std::uint8_t(channel));
-    rows.end_row();
-  }
-  for(auto f : surface.faces())
-  {
-    rows.put(std::uint8_t(3));
-    for(Vertex v : CGAL::vertices_around_face(surface.halfedge(f), surface))
-      rows.put(std::int32_t(number[v]));
-    rows.end_row();
-  }
+      row.put(std::uint8_t(channel));
+  });
+  const std::vector<typename Surface::Face_index> faces(surface.faces().begin(), surface.faces().end());
+  const std::size_t face_row = 1 + 3 * sizeof(std::int32_t);
+  output_detail::write_rows(out, faces.size(), face_row, [&](std::size_t k, output_detail::Row_cursor& row) {
+    row.put(std::uint8_t(3));
+    for(Vertex v : CGAL::vertices_around_face(surface.halfedge(faces[k]), surface))
+      row.put(std::int32_t(number[v]));
+  });
 }
 
 // The CSV: its header line, then append_csv_rows() for each layer.
