@@ -255,7 +255,8 @@ def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_ne
 def _job(points, normals=None, *, radii=("auto",), rings=(), estimator="quadric", denoise="auto",
          denoise_neighbors=None, extraction="front", threads=None, progress=None, spacing=None, noise=None):
     """The native job of these points and options, its shape built: ``closing_values()``,
-    ``result(scales, progress)`` (the dict ``Result`` takes) and ``release()``."""
+    ``result(scales, progress)`` (the dict ``Result`` takes; the job's last call, which frees
+    the shape) and ``release()``."""
     return _native.Job(*_job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors,
                                        extraction, threads, progress, spacing, noise))
 

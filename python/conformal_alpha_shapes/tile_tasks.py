@@ -208,7 +208,6 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     index, points, is_core = shape.index, shape.points, shape.is_core
     native = shape.built()
     result = Result(points, native.result(_option_items(job["tile_scales"], "scales"), None))
-    native.release()
     per_scale = len(result.layers) // len(job["scales"])
     names, descriptions = [], {}
     for k, tile_name in enumerate(result.layers):
