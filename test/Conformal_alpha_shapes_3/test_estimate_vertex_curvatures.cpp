@@ -20,6 +20,7 @@
 #include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -30,6 +31,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <random>
 #include <set>
 #include <thread>
 #include <vector>
@@ -692,6 +694,46 @@ BOOST_AUTO_TEST_CASE(large_radius_on_a_sphere_is_unbiased)
     errors.push_back(std::abs(get(h_map, v) - 1.0));
   BOOST_TEST_MESSAGE("sphere, radius 0.5: median |H - 1| " << quantile(errors, 0.5));
   BOOST_TEST(quantile(errors, 0.5) < 0.005);
+}
+
+
+// The quadric fit's closed forms against Eigen's solvers: the symmetric 2x2
+// eigenproblem (distinct, equal and nearly equal eigenvalues) and the 6x6
+// inverse from the Cholesky factor, which refuses a singular matrix.
+BOOST_AUTO_TEST_CASE(quadric_fit_closed_forms_match_eigen)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::vector<std::array<double, 3> > forms = {{2, 0, 2}, {1, 0, -3}, {0, 1, 0}, {1, 1e-9, 1}, {-5, 0, 1}};
+  for(int k = 0; k < 1000; ++k)
+    forms.push_back({uniform(random), uniform(random), uniform(random)});
+  for(const auto& form : forms)
+  {
+    const I::Symmetric_2x2_eigen closed(form[0], form[1], form[2]);
+    Eigen::Matrix2d m;
+    m << form[0], form[1], form[1], form[2];
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(m);
+    BOOST_TEST(std::abs(closed.larger - eigen.eigenvalues()(1)) < 1e-14);
+    BOOST_TEST(std::abs(closed.smaller - eigen.eigenvalues()(0)) < 1e-14);
+    BOOST_TEST(std::abs(closed.larger_vector.norm() - 1) < 1e-14);
+    BOOST_TEST((m * closed.larger_vector - closed.larger * closed.larger_vector).norm() < 1e-12);
+  }
+
+  for(int k = 0; k < 100; ++k)
+  {
+    const I::Matrix6 a = I::Matrix6::NullaryExpr([&]() { return uniform(random); });
+    const I::Matrix6 m = a * a.transpose() + 0.1 * I::Matrix6::Identity();
+    I::Matrix6 inverse;
+    BOOST_TEST(I::symmetric_positive_inverse(m, inverse));
+    BOOST_TEST((inverse - I::Matrix6(m.inverse())).norm() < 1e-9 * inverse.norm());
+    BOOST_TEST((inverse - inverse.transpose()).norm() == 0.);
+  }
+  I::Matrix6 rank_five = I::Matrix6::Identity(), inverse;
+  rank_five(5, 5) = 0;
+  BOOST_TEST(!I::symmetric_positive_inverse(rank_five, inverse));
+  const I::Vector6 row = I::Vector6::Ones();
+  BOOST_TEST(!I::symmetric_positive_inverse(I::Matrix6(row * row.transpose()), inverse));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
