@@ -18,7 +18,10 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <CGAL/Random.h>
+
 #include <cmath>
+#include <limits>
 #include <vector>
 
 // Every name of this file is in its own namespace: the test runner compiles
@@ -169,6 +172,44 @@ BOOST_AUTO_TEST_CASE(corner_normals_that_cancel_give_a_corner_value)
     }
   }
   BOOST_TEST(nearest > 0u);
+}
+
+
+// The nearest surface points found with a search tree over the faces near
+// the points (internal::surface_feet() with a reach, widened where the
+// nearest face is farther) are those of the tree over the whole surface:
+// points near and far from a sphere with a cap cut off, the reach small
+// enough that most need a wider one, and one far outside the surface's box.
+BOOST_AUTO_TEST_CASE(feet_searched_near_the_points_are_the_whole_surface_feet)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  Surface_mesh sphere;
+  cas3_test::irregular_sphere<Surface_mesh, Point>(3000, 1.0, sphere);
+  cas3_test::remove_cap_above(sphere, 0.8);
+  I::Shape_vertex_table<Point> table;
+  CGAL::Random random(3);
+  for(int k = 0; k < 300; ++k)
+  {
+    const double r = 1 + random.get_double(-0.5, 0.5) * (k % 3 == 0 ? 4 : 0.1);
+    const double z = random.get_double(-1, 1), phi = random.get_double(0, 2 * CGAL_PI);
+    const double s = std::sqrt(1 - z * z);
+    table.points.push_back(Point(r * s * std::cos(phi), r * s * std::sin(phi), r * z));
+  }
+  table.points.push_back(Point(1e12, 0, 0));
+  const std::vector<bool> needs(table.points.size(), true);
+  const auto whole = I::surface_feet<CGAL::Sequential_tag, K>(
+    table, sphere, sphere.points(), needs, std::vector<double>(needs.size(), std::numeric_limits<double>::infinity()));
+  const auto near = I::surface_feet<CGAL::Sequential_tag, K>(table, sphere, sphere.points(), needs,
+                                                             std::vector<double>(needs.size(), 0.01));
+  BOOST_REQUIRE(whole.size() == table.points.size());
+  BOOST_REQUIRE(near.size() == whole.size());
+  for(std::size_t k = 0; k < whole.size(); ++k)
+  {
+    BOOST_TEST_INFO("point " << k);
+    BOOST_TEST(near[k].shape_vertex == k);
+    BOOST_TEST(std::abs(near[k].distance - whole[k].distance) <= 1e-12 * (1 + whole[k].distance));
+    BOOST_TEST(CGAL::squared_distance(near[k].point, whole[k].point) <= 1e-20 * (1 + whole[k].distance));
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -418,7 +418,8 @@ private:
       off_surface[v.second] = false;
     const std::vector<double> far = internal::far_distances(m_shape, table, off_surface);
     before_fits();
-    auto feet = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working, off_surface);
+    auto feet =
+      internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working, off_surface, far);
     internal::drop_far_feet(feet, far);
     std::vector<bool>().swap(off_surface);
 
@@ -434,8 +435,9 @@ private:
     std::vector<bool> needs_foot = internal::needs_foot(table, values);
     for(const auto& foot : feet)
       needs_foot[foot.shape_vertex] = false;
-    const auto on_surface = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working,
-                                                                                           needs_foot);
+    const std::size_t on_surface_count = std::size_t(std::count(needs_foot.begin(), needs_foot.end(), true));
+    const auto on_surface = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(
+      table, surface, working, needs_foot, std::vector<double>(on_surface_count, 0.));
     const std::size_t off_surface_feet = feet.size();
     feet.insert(feet.end(), on_surface.begin(), on_surface.end());
     std::inplace_merge(feet.begin(), feet.begin() + std::ptrdiff_t(off_surface_feet), feet.end(),
