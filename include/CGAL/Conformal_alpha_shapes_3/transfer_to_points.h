@@ -343,9 +343,9 @@ faces_within_reach(const PolygonMesh& pmesh, const VertexPointMap& vpm,
 // search tree is built over the faces within `reach` (by flagged vertex,
 // in the same order; infinite for the whole surface) of the vertices, and
 // again with twice the reach for those whose nearest face there is
-// farther: a point nearer than the reach is on a face within it. At
-// 1,000,000 points, 77 of them off the surface, the whole surface's tree
-// took 1.2 s (serial); the search tree is freed on return.
+// farther: a point nearer than the reach is on a face within it. A few
+// points off a large surface then do not pay for a tree over all of it;
+// the search tree is freed on return.
 template <class ConcurrencyTag, class GT, class PolygonMesh, class VertexPointMap>
 std::vector<Surface_foot<typename GT::Point_3, typename boost::graph_traits<PolygonMesh>::face_descriptor> >
 surface_feet(const Shape_vertex_table<typename GT::Point_3>& table, const PolygonMesh& pmesh,

@@ -51,12 +51,11 @@ inline Tangent_frame frame_from_normal(const Vec3& n)
 }
 
 // The eigenvalues larger >= smaller of the symmetric matrix [[a, b], [b, c]]
-// and a unit eigenvector of the larger, in closed form (Eigen's iterative
-// solver, run for every fit and every interpolation, was a seventh of
-// their time).
-// Of the two eigenvectors that the rows give, the longer is taken, which
-// avoids their cancellation; where the eigenvalues are equal any direction
-// is one, and (1, 0) is given.
+// and a unit eigenvector of the larger, in closed form: every fit and every
+// interpolation solves one, and Eigen's iterative solver is costly for a
+// problem this small. Of the two eigenvectors that the rows give, the
+// longer is taken, which avoids their cancellation; where the eigenvalues
+// are equal any direction is one, and (1, 0) is given.
 struct Symmetric_2x2_eigen
 {
   double larger, smaller;
@@ -306,7 +305,7 @@ typedef Eigen::Matrix<double, 6, 1> Vector6;
 // above 1e-14 times the largest (singular to working precision). The fit
 // solves three right-hand sides and needs the trace of M^-1 M2: one
 // explicit inverse in plain loops is cheaper than Eigen's LDLT on a matrix
-// right-hand side, whose general blocked solver was a quarter of the fit.
+// right-hand side, which goes through its general blocked solver.
 inline bool symmetric_positive_inverse(const Matrix6& m, Matrix6& inverse)
 {
   double l[6][6] = {}, pivot[6];
