@@ -696,7 +696,6 @@ BOOST_AUTO_TEST_CASE(large_radius_on_a_sphere_is_unbiased)
   BOOST_TEST(quantile(errors, 0.5) < 0.005);
 }
 
-
 // The quadric fit's closed forms against Eigen's solvers: the symmetric 2x2
 // eigenproblem (distinct, equal and nearly equal eigenvalues) and the 6x6
 // inverse from the Cholesky factor, which refuses a singular matrix.

@@ -7,6 +7,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/transfer_to_points.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include "cas3_point_values.h"
@@ -17,8 +18,6 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 #endif
-
-#include <CGAL/Random.h>
 
 #include <cmath>
 #include <limits>
