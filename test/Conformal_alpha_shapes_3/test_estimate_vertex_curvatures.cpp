@@ -735,6 +735,34 @@ BOOST_AUTO_TEST_CASE(quadric_fit_closed_forms_match_eigen)
   BOOST_TEST(!I::symmetric_positive_inverse(I::Matrix6(row * row.transpose()), inverse));
 }
 
+// The shells of the quadric fit are quarter octaves of the squared distance
+// relative to the squared length, read from the bits of the ratio: the
+// index is floor(4 log2(ratio)) + 64, within [0, 63], wherever the ratio is
+// not within rounding of a quarter octave's boundary.
+BOOST_AUTO_TEST_CASE(quadric_shell_index_is_the_quarter_octave)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> exponent(-20, 4);
+  int checked = 0;
+  for(int k = 0; k < 100000; ++k)
+  {
+    const double quarters = 4 * exponent(random);
+    if(std::abs(quarters - std::round(quarters)) < 1e-3)
+      continue;
+    const double squared_length = 0.37;
+    const double ratio = std::exp2(quarters / 4);
+    const int expected = (std::min)(I::number_of_quadric_shells - 1,
+                                    (std::max)(0, int(std::floor(quarters)) + I::number_of_quadric_shells));
+    BOOST_TEST(I::quadric_shell_index(ratio * squared_length, squared_length) == expected);
+    ++checked;
+  }
+  BOOST_TEST(checked > 90000);
+  BOOST_TEST(I::quadric_shell_index(0., 1.) == 0);
+  BOOST_TEST(I::quadric_shell_index(std::numeric_limits<double>::denorm_min(), 1.) == 0);
+  BOOST_TEST(I::quadric_shell_index(1e300, 1.) == I::number_of_quadric_shells - 1);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_estimate_vertex_curvatures

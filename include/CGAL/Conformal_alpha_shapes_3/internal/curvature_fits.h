@@ -282,7 +282,8 @@ constexpr int number_of_quadric_shells = 16 * quadric_shells_per_octave;
 // The ratio's binary exponent and mantissa are read from its representation
 // as std::frexp() would give them (a library call, once per neighbor, was a
 // tenth of the fits' preparation); a subnormal ratio lands in shell 0 either
-// way.
+// way. The quarter is a sum of comparisons rather than a choice by branches,
+// which a neighbor's distance would take at random.
 inline int quadric_shell_index(double squared_distance, double squared_length)
 {
   const double ratio = squared_distance / squared_length;
@@ -292,7 +293,7 @@ inline int quadric_shell_index(double squared_distance, double squared_length)
   bits = (bits & 0x000fffffffffffffull) | (std::uint64_t(1022) << 52);
   double mantissa;  // in [0.5, 1)
   std::memcpy(&mantissa, &bits, sizeof bits);
-  const int quarter = mantissa < 0.5946 ? 0 : mantissa < 0.7071 ? 1 : mantissa < 0.8409 ? 2 : 3;
+  const int quarter = int(mantissa >= 0.5946) + int(mantissa >= 0.7071) + int(mantissa >= 0.8409);
   return (std::max)(0, (std::min)(number_of_quadric_shells - 1,
                                   (exponent - 1) * quadric_shells_per_octave + quarter + number_of_quadric_shells));
 }
