@@ -3,12 +3,15 @@
 // none when far) and of points whose given normal faces the other side.
 #include <boost/test/unit_test.hpp>
 
+#include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+#include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
 #include <CGAL/Conformal_alpha_shapes_3/transfer_to_points.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/property_map.h>
 
 #include "cas3_point_values.h"
 #include "cas3_test_meshes.h"
@@ -171,6 +174,68 @@ BOOST_AUTO_TEST_CASE(corner_normals_that_cancel_give_a_corner_value)
     }
   }
   BOOST_TEST(nearest > 0u);
+}
+
+// Where the nearest surface point is a vertex without a value (its own fit
+// undefined), the point takes the mean of that vertex's neighbors with
+// values, whichever of the vertex's facets the search named: made-up values
+// on a sphere's surface, every tenth vertex's cleared.
+BOOST_AUTO_TEST_CASE(a_vertex_without_a_value_takes_its_neighbors_mean)
+{
+  typedef Surface_mesh::Vertex_index Vertex;
+  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(2000, 1, 1, 1);
+  const Cas cas(pts.begin(), pts.end());
+  Surface_mesh mesh;
+  auto input_index = mesh.add_property_map<Vertex, std::size_t>("v:input_index").first;
+  CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
+  std::vector<CAS3::Vertex_curvature<K> > values(mesh.number_of_vertices());
+  for(Vertex v : mesh.vertices())
+  {
+    const Vector radial = mesh.point(v) - CGAL::ORIGIN;
+    const Vector n = radial / std::sqrt(radial.squared_length());
+    const Vector d1 = CGAL::cross_product(n, Vector(0.3, 0.4, 0.5));
+    const double k = 1 + double(std::size_t(v)) / 1000;
+    CAS3::Vertex_curvature<K>& c = values[std::size_t(v)];
+    c.normal = n;
+    c.principal = CAS3::Principal_curvatures_and_directions<K>{k, k, d1 / std::sqrt(d1.squared_length()),
+                                                               CGAL::cross_product(n, d1) / std::sqrt(d1.squared_length())};
+    c.radius = 0.1;
+  }
+  std::vector<Vertex> cleared;
+  for(Vertex v : mesh.vertices())
+  {
+    bool apart = std::size_t(v) % 10 == 0;
+    for(Vertex u : CGAL::vertices_around_target(v, mesh))
+      apart = apart && values[std::size_t(u)].is_defined();
+    if(apart)
+    {
+      cleared.push_back(v);
+      values[std::size_t(v)] = CAS3::Vertex_curvature<K>();
+    }
+  }
+  std::vector<std::vector<CAS3::Vertex_curvature<K> > > layers(1, values);
+  std::vector<CAS3::Point_curvature<K> > out(pts.size());
+  CAS3::transfer_to_points(cas, mesh, layers, [&](std::size_t) { return CGAL::make_property_map(out); },
+                           CAS3::parameters::vertex_input_index_map(input_index));
+  BOOST_TEST(cleared.size() > 100u);
+  for(Vertex v : cleared)
+  {
+    double k = 0, count = 0;
+    Vector n = CGAL::NULL_VECTOR;
+    for(Vertex u : CGAL::vertices_around_target(v, mesh))
+    {
+      k += values[std::size_t(u)].principal.max_curvature;
+      n = n + values[std::size_t(u)].normal;
+      ++count;
+    }
+    n = n / std::sqrt(n.squared_length());
+    const CAS3::Point_curvature<K>& c = out[input_index[v]];
+    BOOST_TEST_INFO("vertex " << std::size_t(v) << ", " << count << " neighbors");
+    BOOST_TEST(c.source == CAS3::NEAREST_SURFACE_POINT);
+    BOOST_TEST(c.distance == 0.);
+    BOOST_TEST(std::abs(c.mean_curvature - k / count) < 1e-12);
+    BOOST_TEST(std::sqrt((c.normal - n).squared_length()) < 1e-12);
+  }
 }
 
 

@@ -150,52 +150,64 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
   c.distance = foot->distance;
   if(foot->face == typename boost::graph_traits<PolygonMesh>::face_descriptor())
     return c;
-  // barycentric weights of the nearest point, over the corners with values
   vertex_descriptor corner[3];
   int i = 0;
   for(vertex_descriptor u : vertices_around_face(halfedge(foot->face, pmesh), pmesh))
     corner[i++] = u;
   auto value = [&](vertex_descriptor u) -> const Vertex_curvature<GT>& { return values[get(vertex_index, u)]; };
-  double weight[3], total = 0;
+  // The vertices whose values the nearest point takes, with their weights:
+  // the facet's corners with values, by barycentric weights; where the
+  // nearest point is a corner without a value, that corner's neighbors with
+  // values, alike, so that it does not matter which of the corner's facets
+  // the search named.
+  std::vector<std::pair<vertex_descriptor, double> > sources;
+  double area[3];
   for(int j = 0; j < 3; ++j)
+    area[j] = std::sqrt(CGAL::to_double(CGAL::squared_area(foot->point, get(vpm, corner[(j + 1) % 3]),
+                                                           get(vpm, corner[(j + 2) % 3]))));
+  for(int j = 0; j < 3 && sources.empty(); ++j)
+    if(!value(corner[j]).is_defined() && area[j] > 0 && area[(j + 1) % 3] <= 1e-9 * area[j]
+       && area[(j + 2) % 3] <= 1e-9 * area[j])
+      for(vertex_descriptor u : vertices_around_target(corner[j], pmesh))
+        if(value(u).is_defined())
+          sources.emplace_back(u, 1.);
+  if(sources.empty())
   {
-    weight[j] = value(corner[j]).is_defined()
-      ? std::sqrt(CGAL::to_double(CGAL::squared_area(foot->point, get(vpm, corner[(j + 1) % 3]),
-                                                     get(vpm, corner[(j + 2) % 3]))))
-      : 0.;
-    total += weight[j];
-  }
-  if(!(total > 0))  // a degenerate facet: its corners with values, alike
     for(int j = 0; j < 3; ++j)
-      total += (weight[j] = value(corner[j]).is_defined() ? 1. : 0.);
-  if(!(total > 0))
+      if(value(corner[j]).is_defined() && area[j] > 0)
+        sources.emplace_back(corner[j], area[j]);
+    if(sources.empty())  // a degenerate facet: its corners with values, alike
+      for(int j = 0; j < 3; ++j)
+        if(value(corner[j]).is_defined())
+          sources.emplace_back(corner[j], 1.);
+  }
+  if(sources.empty())
     return c;
+  double total = 0;
+  for(const auto& source : sources)
+    total += source.second;
   Vec3 n = Vec3::Zero(), max_d = Vec3::Zero();
   double r = 0, max_k = 0, min_k = 0;
-  int reference = -1;
-  for(int j = 0; j < 3; ++j)
+  const Vec3 reference_d1 = vec3(value(sources.front().first).principal.max_direction);
+  for(const auto& source : sources)
   {
-    if(!(weight[j] > 0))
-      continue;
-    const double w = weight[j] / total;
-    const Vertex_curvature<GT>& corner_value = value(corner[j]);
-    if(reference < 0)
-      reference = j;
-    n += w * vec3(corner_value.normal);
+    const double w = source.second / total;
+    const Vertex_curvature<GT>& source_value = value(source.first);
+    n += w * vec3(source_value.normal);
     // a principal direction is a line: align signs before averaging
-    const Vec3 reference_d1 = vec3(value(corner[reference]).principal.max_direction);
-    const Vec3 d1 = vec3(corner_value.principal.max_direction);
+    const Vec3 d1 = vec3(source_value.principal.max_direction);
     max_d += (d1.dot(reference_d1) < 0 ? -w : w) * d1;
-    r += w * corner_value.radius;
-    max_k += w * corner_value.principal.max_curvature;
-    min_k += w * corner_value.principal.min_curvature;
+    r += w * source_value.radius;
+    max_k += w * source_value.principal.max_curvature;
+    min_k += w * source_value.principal.min_curvature;
   }
-  // Corners whose normals nearly cancel (a fold of the surface) have no
-  // meaningful average: the corner of largest weight speaks for the point.
+  // Sources whose normals nearly cancel (a fold of the surface) have no
+  // meaningful average: the source of largest weight speaks for the point.
   if(!(n.norm() > 0.5))
   {
-    const int nearest = int(std::max_element(weight, weight + 3) - weight);
-    const Vertex_curvature<GT>& e = value(corner[nearest]);
+    const auto heaviest = std::max_element(sources.begin(), sources.end(),
+                                           [](const auto& x, const auto& y) { return x.second < y.second; });
+    const Vertex_curvature<GT>& e = value(heaviest->first);
     return record(NEAREST_SURFACE_POINT, c.distance, e.radius, e.normal, e.principal.max_curvature,
                   e.principal.min_curvature, e.principal.max_direction, e.principal.min_direction);
   }
@@ -489,8 +501,10 @@ storage only then). A point whose vertex is a vertex of the surface with a defin
 value takes that value (`SURFACE_VERTEX`); any other point takes the values
 at its nearest point on the surface, interpolated over the facet there by
 barycentric weights over the corners with values (`NEAREST_SURFACE_POINT`,
-with the distance; where the corners' normals nearly cancel, their weighted
-sum shorter than one half, the values of the corner of largest weight), unless it is farther than `far_from_surface()` local
+with the distance; where that point is a corner without a value, the mean
+of the corner's neighbors with values; where the normals averaged nearly
+cancel, their weighted sum shorter than one half, the values of the one of
+largest weight), unless it is farther than `far_from_surface()` local
 spacings (`NO_VALUE`, all NaN; so is every point when the surface is
 empty). Where several surface vertices stand for one vertex of the shape
 (a pinched vertex), the first with a defined value gives it. With
