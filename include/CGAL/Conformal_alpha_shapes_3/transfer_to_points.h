@@ -157,9 +157,9 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
   auto value = [&](vertex_descriptor u) -> const Vertex_curvature<GT>& { return values[get(vertex_index, u)]; };
   // The vertices whose values the nearest point takes, with their weights:
   // the facet's corners with values, by barycentric weights; where the
-  // nearest point is a corner without a value, that corner's neighbors with
-  // values, alike, so that it does not matter which of the corner's facets
-  // the search named.
+  // nearest point is a corner (the other two weights vanish to rounding)
+  // without a value, that corner's neighbors with values, alike, so that it
+  // does not matter which of the corner's facets the search named.
   std::vector<std::pair<vertex_descriptor, double> > sources;
   double area[3];
   for(int j = 0; j < 3; ++j)
