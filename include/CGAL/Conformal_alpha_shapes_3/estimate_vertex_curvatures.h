@@ -375,8 +375,10 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
   const std::vector<internal::Vec3> normals = internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index);
   const double noise =
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::noise_level), 0.);
-  const std::vector<internal::Vertex_estimate> estimates = internal::estimate_at_every_vertex<ConcurrencyTag>(
-    graph, normals, rules, estimator, noise, 0, internal::fit_center_keys(pmesh, vertex_index, graph, np)).front();
+  std::vector<internal::Vertex_estimate> estimates(graph.size());
+  internal::estimate_at_every_vertex<ConcurrencyTag>(
+    graph, normals, rules, estimator, noise, 0, internal::fit_center_keys(pmesh, vertex_index, graph, np),
+    [&](std::size_t, std::size_t v, const internal::Vertex_estimate& e) { estimates[v] = e; });
   std::size_t undefined = 0;
   for(vertex_descriptor v : vertices(pmesh))
   {
@@ -434,25 +436,17 @@ estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborh
     rules.push_back(internal::neighborhood_rule(neighborhood, spacing));
     internal::check_neighborhood_rule(rules.back(), estimator);
   }
-  std::vector<std::vector<internal::Vertex_estimate> > estimates;
-  {
-    // the graph is freed before the estimates are converted
-    const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
-    const internal::Vertex_graph graph = internal::vertex_graph(pmesh, vpm, vertex_index);
-    estimates = internal::estimate_at_every_vertex<ConcurrencyTag>(
-      graph, internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index), rules, estimator,
-      choose_parameter(get_parameter(np, internal_np_cas3::noise_level), 0.), spacing,
-      internal::fit_center_keys(pmesh, vertex_index, graph, np));
-  }
-  std::vector<std::vector<Vertex_curvature<GT> > > curvatures(estimates.size());
-  for(std::size_t r = 0; r < estimates.size(); ++r)
-  {
-    curvatures[r].resize(estimates[r].size());
-    internal::for_each_index<ConcurrencyTag>(estimates[r].size(), []() { return 0; }, [&](std::size_t v, int&) {
-      curvatures[r][v] = internal::to_vertex_curvature<GT>(estimates[r][v]);
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
+  const internal::Vertex_graph graph = internal::vertex_graph(pmesh, vpm, vertex_index);
+  std::vector<std::vector<Vertex_curvature<GT> > > curvatures(rules.size(),
+                                                              std::vector<Vertex_curvature<GT> >(graph.size()));
+  internal::estimate_at_every_vertex<ConcurrencyTag>(
+    graph, internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index), rules, estimator,
+    choose_parameter(get_parameter(np, internal_np_cas3::noise_level), 0.), spacing,
+    internal::fit_center_keys(pmesh, vertex_index, graph, np),
+    [&](std::size_t r, std::size_t v, const internal::Vertex_estimate& e) {
+      curvatures[r][v] = internal::to_vertex_curvature<GT>(e);
     });
-    std::vector<internal::Vertex_estimate>().swap(estimates[r]);
-  }
   return curvatures;
 }
 

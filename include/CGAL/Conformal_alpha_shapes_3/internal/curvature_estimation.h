@@ -471,18 +471,18 @@ private:
   std::vector<Center_fit> m_center_fits;  // by center, then large radius
 };
 
-// Estimates of every rule at every vertex of `graph`: [rule][vertex index].
-template <typename ConcurrencyTag>
-std::vector<std::vector<Vertex_estimate> > estimate_at_every_vertex(const Vertex_graph& graph,
-                                                                   const std::vector<Vec3>& normals,
-                                                                   const std::vector<Neighborhood_rule>& rules,
-                                                                   Curvature_estimator estimator,
-                                                                   double sample_noise, double sample_spacing,
-                                                                   const std::vector<std::uint64_t>& center_keys)
+// Estimates of every rule at every vertex of `graph`, each handed to
+// `write(rule, vertex index, estimate)` once, from TBB's threads as the tag
+// says: the callers keep them in their own form, without a copy of every
+// layer in this one.
+template <typename ConcurrencyTag, typename Write>
+void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>& normals,
+                              const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
+                              double sample_noise, double sample_spacing,
+                              const std::vector<std::uint64_t>& center_keys, Write write)
 {
   Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, &center_keys);
   estimation.fit_at_centers<ConcurrencyTag>();
-  std::vector<std::vector<Vertex_estimate> > by_rule(rules.size(), std::vector<Vertex_estimate>(graph.size()));
   typedef Curvature_estimation::Workspace Workspace;
   struct Per_thread
   {
@@ -494,9 +494,8 @@ std::vector<std::vector<Vertex_estimate> > estimate_at_every_vertex(const Vertex
     [&](std::size_t v, Per_thread& thread) {
       estimation.estimate(v, thread.workspace, thread.estimates.data());
       for(std::size_t r = 0; r < rules.size(); ++r)
-        by_rule[r][v] = thread.estimates[r];
+        write(r, v, thread.estimates[r]);
     });
-  return by_rule;
 }
 
 // The Chen-Wu normal of every vertex, by vertex index.
