@@ -763,6 +763,88 @@ BOOST_AUTO_TEST_CASE(quadric_shell_index_is_the_quarter_octave)
   BOOST_TEST(I::quadric_shell_index(1e300, 1.) == I::number_of_quadric_shells - 1);
 }
 
+// The automatic rule is settled by the fits at its smaller radii when they
+// hold those that measure the noise and one past what the choice weighs
+// (the search then stops short of the larger radii): on random candidate
+// fits, the choice among every settled prefix is the choice among all,
+// and prefixes that are not settled do choose otherwise, so that a wrong
+// answer from choice_is_settled() would show.
+BOOST_AUTO_TEST_CASE(automatic_choice_settled_by_a_prefix_is_the_whole_choice)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  const std::vector<double> radii = CAS3::Neighborhood::automatic_radii();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int settled = 0, unsettled_and_different = 0;
+  for(int k = 0; k < 20000; ++k)
+  {
+    // heights of noise sigma, a bias growing as r^2 and, past a random
+    // radius, residuals that grow fast (a thin part, detail of its own)
+    const double sigma = std::pow(10., -6 * unit(random)), bias = 4 * unit(random) - 2, H0 = unit(random);
+    const std::size_t wrap = 1 + std::size_t(unit(random) * double(radii.size()));
+    std::vector<I::Candidate_fit> fits;
+    for(std::size_t i = 0; i < radii.size(); ++i)
+    {
+      if(unit(random) < 0.05)
+        continue;  // an undefined fit
+      I::Candidate_fit fit;
+      fit.curvature.normal = fit.curvature.d1 = fit.curvature.d2 = I::Vec3::UnitZ();
+      const double r = radii[i] / radii.back(), H = H0 + bias * r * r + sigma * (unit(random) - 0.5) / radii[i];
+      fit.curvature.k1 = fit.curvature.k2 = H;
+      fit.error.noise = sigma * (1 + 0.2 * unit(random)) * (i >= wrap ? 100 * double(i - wrap + 1) : 1);
+      fit.error.degrees_of_freedom = radii[i] * radii[i];
+      fit.error.per_noise = 1 / radii[i];
+      fit.radius = radii[i];
+      fits.push_back(fit);
+    }
+    if(fits.empty())
+      continue;
+    const double sample_noise = unit(random) < 0.5 ? 0. : sigma;
+    const I::Candidate_fit& whole = I::choose_by_least_squared_error(fits, sample_noise);
+    for(std::size_t n = 1; n <= fits.size(); ++n)
+    {
+      const std::vector<I::Candidate_fit> prefix(fits.begin(), fits.begin() + std::ptrdiff_t(n));
+      const I::Candidate_fit& chosen = I::choose_by_least_squared_error(prefix, sample_noise);
+      if(I::choice_is_settled(prefix, sample_noise))
+      {
+        ++settled;
+        BOOST_TEST(chosen.radius == whole.radius);
+        BOOST_TEST(chosen.curvature.k1 == whole.curvature.k1);
+      }
+      else if(chosen.radius != whole.radius)
+        ++unsettled_and_different;
+    }
+  }
+  BOOST_TEST_MESSAGE("settled prefixes " << settled << ", unsettled ones that choose otherwise " << unsettled_and_different);
+  BOOST_TEST(settled > 10000);
+  BOOST_TEST(unsettled_and_different > 1000);
+}
+
+// The nested balls found level by level (the automatic rule searches the
+// larger radii only where its choice needs them) are those found at once.
+BOOST_AUTO_TEST_CASE(balls_found_level_by_level_are_found_at_once)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  const Surface_mesh mesh = jittered_torus(1.0, 0.35);
+  const I::Vertex_graph graph = I::vertex_graph(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh));
+  const std::vector<double> radii = {0.05, 0.08, 0.13, 0.2, 0.3};
+  I::Nested_neighborhood_search at_once(graph.size()), by_level(graph.size());
+  for(std::size_t v = 0; v < graph.size(); v += 97)
+  {
+    at_once.balls(graph, v, radii);
+    by_level.balls(graph, v, radii, 1);
+    BOOST_TEST(by_level.levels_found() == 1u);
+    by_level.more_balls(graph, 3);
+    by_level.more_balls(graph, 3);
+    by_level.more_balls(graph, radii.size());
+    BOOST_TEST(by_level.levels_found() == radii.size());
+    BOOST_TEST(by_level.vertices() == at_once.vertices());
+    BOOST_TEST(by_level.squared_distances() == at_once.squared_distances());
+    for(std::size_t level = 0; level < radii.size(); ++level)
+      BOOST_TEST(by_level.end(level) == at_once.end(level));
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 } // namespace test_estimate_vertex_curvatures

@@ -78,6 +78,25 @@ inline double residual_noise(const std::vector<Candidate_fit>& fits)
   return std::sqrt(noise2);
 }
 
+// How many of the fits the choice below weighs: those before the first
+// whose residuals exceed `polynomial_residual_limit` times the noise.
+inline std::size_t weighed_candidates(const std::vector<Candidate_fit>& fits, double sample_noise)
+{
+  const double residual_limit = polynomial_residual_limit * (std::max)(sample_noise, residual_noise(fits));
+  for(std::size_t i = 1; i < fits.size(); ++i)
+    if(fits[i].error.noise > residual_limit)
+      return i;
+  return fits.size();
+}
+
+// Whether the choice among `fits` is the choice among any list that starts
+// with them (the fits at the larger radii then do not matter): they hold
+// the fits that measure the noise, and one past those the choice weighs.
+inline bool choice_is_settled(const std::vector<Candidate_fit>& fits, double sample_noise)
+{
+  return fits.size() >= noise_measuring_radii && weighed_candidates(fits, sample_noise) < fits.size();
+}
+
 // The automatic neighborhood, by least expected squared error of the mean
 // curvature (a plug-in rule). Each fit's standard error is the noise through
 // the fit (`Quadric_fit_error::per_noise`); the noise is the sample's,
@@ -92,16 +111,8 @@ inline double residual_noise(const std::vector<Candidate_fit>& fits)
 inline const Candidate_fit& choose_by_least_squared_error(const std::vector<Candidate_fit>& fits,
                                                           double sample_noise = 0)
 {
-  const double fitted_noise = residual_noise(fits);
-  const double noise = sample_noise > 0 ? sample_noise : residual_noise_factor * fitted_noise;
-  const double residual_limit = polynomial_residual_limit * (std::max)(sample_noise, fitted_noise);
-  std::size_t count = fits.size();
-  for(std::size_t i = 1; i < fits.size(); ++i)
-    if(fits[i].error.noise > residual_limit)
-    {
-      count = i;
-      break;
-    }
+  const double noise = sample_noise > 0 ? sample_noise : residual_noise_factor * residual_noise(fits);
+  const std::size_t count = weighed_candidates(fits, sample_noise);
 
   const double r_max = fits[count - 1].radius;
   std::vector<double> se(count), x(count);

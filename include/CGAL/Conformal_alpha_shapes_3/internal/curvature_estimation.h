@@ -127,6 +127,13 @@ constexpr double large_radius_per_center_spacing = 7;
 class Curvature_estimation
 {
 public:
+  // Where the prepared neighbors of the levels up to one end: how many
+  // neighbors, and how many of the quadric fit's shells hold them.
+  struct Level_end
+  {
+    std::size_t neighbors = 0, shells = 0;
+  };
+
   // Per thread: the searches and the fit's buffers.
   struct Workspace
   {
@@ -135,6 +142,14 @@ public:
     std::vector<Quadric_shell> shells;                    // by level, then shell
     std::array<int, number_of_quadric_shells> shell_of;  // in the current level
     std::vector<Neighbor> neighbors;
+    // where prepare() stopped: the vertices prepared, their last level
+    // and where it ends
+    struct Prepared
+    {
+      std::size_t vertices = 0, level = 0;
+      Level_end end;
+    };
+    Prepared prepared;
     std::vector<Radius_fit> fits;  // by radius
     std::vector<Candidate_fit> candidates;
     // the centers around the vertex: where, whether fitted at the
@@ -190,6 +205,24 @@ public:
       }
     }
     m_fine_radii.assign(m_radii.begin(), m_radii.begin() + std::ptrdiff_t(m_fine_levels));
+
+    // the fine radii searched at every vertex: those of the fixed rules,
+    // and the candidates that measure the noise; the others only where an
+    // automatic choice needs them
+    m_first_levels = m_fine_levels;
+    bool automatic = false;
+    std::size_t needed = 0;
+    for(const Neighborhood_rule& rule : rules)
+      if(!rule.candidates.empty())
+      {
+        automatic = true;
+        const std::size_t measuring = (std::min)(rule.candidates.size(), noise_measuring_radii);
+        needed = (std::max)(needed, radius_level(rule.candidates[measuring - 1]) + 1);
+      }
+      else if(rule.radius > 0 && radius_level(rule.radius) < m_fine_levels)
+        needed = (std::max)(needed, radius_level(rule.radius) + 1);
+    if(automatic)
+      m_first_levels = (std::min)(needed, m_fine_levels);
   }
 
   // The fits at the large radii at every center; serial or parallel as
@@ -245,13 +278,6 @@ private:
     return std::size_t(std::lower_bound(m_radii.begin(), m_radii.end(), r) - m_radii.begin());
   }
 
-  // Where the prepared neighbors of the levels up to one end: how many
-  // neighbors, and how many of the quadric fit's shells hold them.
-  struct Level_end
-  {
-    std::size_t neighbors = 0, shells = 0;
-  };
-
   // What the fit needs of each vertex the search found (in coordinates
   // divided by `length` for the quadric fit, in shells level by level);
   // coincident vertices carry no direction and are left out. `ends[j]` is
@@ -259,17 +285,25 @@ private:
   void prepare(std::size_t v, const Tangent_frame& f, double length, std::size_t levels, Workspace& ws,
                std::vector<Level_end>& ends) const
   {
-    const Vec3& p = m_graph.points[v];
-    const std::vector<Vertex_graph::Index>& found = ws.search.vertices();
-    const std::vector<double>& squared_distance = ws.search.squared_distances();
-    const double squared_length = length * length, inverse_length = 1 / length;
     ws.shells.clear();
     ws.neighbors.clear();
     ws.shell_of.fill(-1);
     ends.assign(levels, Level_end());
-    Level_end end;
-    std::size_t level = 0;
-    for(std::size_t k = 0; k < found.size(); ++k)
+    ws.prepared = Workspace::Prepared();
+    prepare_more(v, f, length, ws, ends);
+  }
+
+  // prepare() of the levels that the search found since.
+  void prepare_more(std::size_t v, const Tangent_frame& f, double length, Workspace& ws,
+                    std::vector<Level_end>& ends) const
+  {
+    const Vec3& p = m_graph.points[v];
+    const std::vector<Vertex_graph::Index>& found = ws.search.vertices();
+    const std::vector<double>& squared_distance = ws.search.squared_distances();
+    const double squared_length = length * length, inverse_length = 1 / length;
+    Level_end end = ws.prepared.end;
+    std::size_t level = ws.prepared.level;
+    for(std::size_t k = ws.prepared.vertices; k < found.size(); ++k)
     {
       for(; ws.search.end(level) <= k; ++level)
       {
@@ -301,8 +335,12 @@ private:
         ++end.neighbors;
       }
     }
-    for(; level < levels; ++level)
+    for(; level < ws.search.levels_found(); ++level)
+    {
       ends[level] = end;
+      ws.shell_of.fill(-1);
+    }
+    ws.prepared = Workspace::Prepared{found.size(), level, end};
   }
 
   // The fit over the prepared neighbors up to `end`, fading at `fade`,
@@ -352,20 +390,64 @@ private:
     }
   }
 
+  // The defined fits of an automatic rule's candidates below level
+  // `levels`, in ws.candidates.
+  void candidates_below(const Neighborhood_rule& rule, std::size_t levels, Workspace& ws) const
+  {
+    ws.candidates.clear();
+    for(double radius : rule.candidates)
+    {
+      const std::size_t level = radius_level(radius);
+      if(level >= levels)
+        break;
+      const Radius_fit& q = ws.fits[level];
+      if(q.defined)
+        ws.candidates.push_back(Candidate_fit{q.curvature, q.error, radius});
+    }
+  }
+
+  // Whether every automatic rule's choice is settled by the fits below
+  // level `levels` (choice_is_settled()).
+  bool choices_are_settled(std::size_t levels, Workspace& ws) const
+  {
+    for(const Neighborhood_rule& rule : m_rules)
+      if(!rule.candidates.empty())
+      {
+        candidates_below(rule, levels, ws);
+        if(!choice_is_settled(ws.candidates, m_sample_noise))
+          return false;
+      }
+    return true;
+  }
+
   void estimate_in_balls(std::size_t v, Workspace& ws, Vertex_estimate* out) const
   {
     const Tangent_frame f = frame_from_normal(m_normals[v]);
     std::vector<Level_end> ends;
     ws.fits.assign(m_radii.size(), Radius_fit());
+    // the automatic rules choose among the radii below this level: all of
+    // them, or those that settled their choices, the larger ones left
+    // unsearched (a clean sample settles at a few spacings)
+    std::size_t choice_levels = m_radii.size();
     if(m_fine_levels > 0)
     {
       // the shells' unit is the largest radius whether or not it is fitted
       // here, so that the small radii's fits do not depend on it
       const double length = m_radii.back();
-      ws.search.balls(m_graph, v, m_fine_radii);
+      std::size_t levels = m_first_levels;
+      ws.search.balls(m_graph, v, m_fine_radii, levels);
       prepare(v, f, length, m_fine_levels, ws, ends);
-      for(std::size_t j = 0; j < m_fine_levels; ++j)
+      for(std::size_t j = 0; j < levels; ++j)
         fit(f, ends[j], m_radii[j], length, ws, m_with_error[j] != 0, ws.fits[j]);
+      while(levels < m_fine_levels && !choices_are_settled(levels, ws))
+      {
+        ws.search.more_balls(m_graph, levels + 1);
+        prepare_more(v, f, length, ws, ends);
+        fit(f, ends[levels], m_radii[levels], length, ws, m_with_error[levels] != 0, ws.fits[levels]);
+        ++levels;
+      }
+      if(levels < m_fine_levels)
+        choice_levels = levels;
     }
     if(m_centers)
     {
@@ -379,13 +461,7 @@ private:
       const Neighborhood_rule& rule = m_rules[r];
       if(!rule.candidates.empty())
       {
-        ws.candidates.clear();
-        for(double radius : rule.candidates)
-        {
-          const Radius_fit& q = ws.fits[radius_level(radius)];
-          if(q.defined)
-            ws.candidates.push_back(Candidate_fit{q.curvature, q.error, radius});
-        }
+        candidates_below(rule, choice_levels, ws);
         if(!ws.candidates.empty())
         {
           const Candidate_fit& chosen = choose_by_least_squared_error(ws.candidates, m_sample_noise);
@@ -466,6 +542,7 @@ private:
   // the centers
   std::size_t m_fine_levels = 0;
   std::vector<double> m_fine_radii;
+  std::size_t m_first_levels = 0;  // of the fine radii, searched at every vertex
   std::shared_ptr<const Fit_centers> m_centers;
   double m_center_reach = 0;
   std::vector<Center_fit> m_center_fits;  // by center, then large radius

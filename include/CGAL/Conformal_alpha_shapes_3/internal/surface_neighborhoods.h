@@ -137,6 +137,8 @@ public:
   const std::vector<Vertex_graph::Index>& vertices() const { return m_found; }
   const std::vector<double>& squared_distances() const { return m_squared_distance; }
   std::size_t end(std::size_t level) const { return m_end[level]; }
+  // how many levels were searched
+  std::size_t levels_found() const { return m_levels_found; }
 
   // Balls of the given increasing radii around v, cut to what is connected
   // to v inside each: a vertex's level is the smallest radius at which a
@@ -146,15 +148,27 @@ public:
   // that reaches it, which is its level. Distances are compared squared:
   // the search runs once per vertex over hundreds of vertices, and a square
   // root per vertex reached was a tenth of its time.
-  void balls(const Vertex_graph& g, std::size_t v, const std::vector<double>& radii)
+  // The first `levels` of them (all by default); more_balls() finds the
+  // others, as they would have been found at once.
+  void balls(const Vertex_graph& g, std::size_t v, const std::vector<double>& radii,
+             std::size_t levels = std::size_t(-1))
   {
     start(v, radii.size());
+    m_center = v;
     m_squared_radii.resize(radii.size());
     for(std::size_t level = 0; level < radii.size(); ++level)
       m_squared_radii[level] = radii[level] * radii[level];
-    const Vec3& p = g.points[v];
     m_pending[0].push(Vertex_graph::Index(v), 0);
-    for(std::size_t level = 0; level < radii.size(); ++level)
+    m_levels_found = 0;
+    more_balls(g, levels);
+  }
+
+  // The levels of the balls up to `levels` (excluded) that balls() left.
+  void more_balls(const Vertex_graph& g, std::size_t levels)
+  {
+    const std::size_t v = m_center, count = m_squared_radii.size();
+    const Vec3& p = g.points[v];
+    for(std::size_t level = m_levels_found; level < (std::min)(levels, count); ++level)
     {
       // the pending list of this level grows while it is walked
       const Pending& pending = m_pending[level];
@@ -172,13 +186,14 @@ public:
           const Vertex_graph::Index w = m_reached[e];
           const double d2 = (g.points[w] - p).squaredNorm();
           std::size_t at = level;
-          while(at < radii.size() && d2 > m_squared_radii[at])
+          while(at < count && d2 > m_squared_radii[at])
             ++at;
-          if(at < radii.size())  // else outside every ball
+          if(at < count)  // else outside every ball
             m_pending[at].push(w, d2);
         }
       }
       m_end[level] = m_found.size();
+      m_levels_found = level + 1;
     }
   }
 
@@ -207,6 +222,7 @@ public:
     }
     m_found.erase(m_found.begin());
     m_squared_distance.erase(m_squared_distance.begin());
+    m_levels_found = rings;
   }
 
 private:
@@ -261,6 +277,7 @@ private:
   std::vector<double> m_squared_distance;
   std::vector<std::size_t> m_end;
   std::vector<double> m_squared_radii;
+  std::size_t m_center = 0, m_levels_found = 0;  // the search's vertex, and its levels searched
   // Reached, not yet walked. Two arrays rather than one of pairs: a pair
   // built from two registers was stored and read back whole, which stalls
   // (a fifth of the search's time).
