@@ -474,6 +474,49 @@ BOOST_AUTO_TEST_CASE(parallel_run_matches_the_serial_run_bit_for_bit)
   check(CAS3::parameters::neighborhood_radii(radii));
 }
 
+// The centers' fits are made when the vertices first need them, on
+// whichever thread: the fixed rules' large radius first where the automatic
+// rule settles at small radii (the clean half of a torus), all large radii
+// where it does not (the noisy half), both at centers between. The
+// parallel runs give the serial run's bits, layer by layer.
+BOOST_AUTO_TEST_CASE(center_fits_made_on_demand_match_the_serial_run)
+{
+  Surface_mesh mesh = jittered_torus(1.0, 0.35);
+  std::vector<double> lengths;
+  for(auto e : mesh.edges())
+    lengths.push_back(std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1)))));
+  const double spacing = quantile(lengths, 0.5) / 1.1;
+  for(auto v : mesh.vertices())
+  {
+    const Point& p = mesh.point(v);
+    if(p.x() > 0)  // radial noise of a third of a spacing on half of the torus
+      mesh.point(v) = p + (p - CGAL::ORIGIN) * (spacing / 3 * std::sin(1e3 * double(v.idx())) / std::sqrt((p - CGAL::ORIGIN).squared_length()));
+  }
+  const std::vector<CAS3::Neighborhood> neighborhoods = {CAS3::Neighborhood::automatic(), CAS3::Neighborhood::spacings(16)};
+  const auto np = CAS3::parameters::sample_spacing(spacing);
+  auto bits = [&](const auto& layers) {
+    std::vector<double> out;
+    for(const auto& layer : layers)
+      for(const auto& c : layer)
+        for(double x : {c.principal.max_curvature, c.principal.min_curvature, c.radius, c.normal.x(),
+                        c.principal.max_direction.y()})
+          out.push_back(x);
+    return out;
+  };
+  const auto serial = CAS3::estimate_vertex_curvatures<CGAL::Sequential_tag>(mesh, neighborhoods, np);
+  std::size_t small = 0, large = 0;
+  for(const auto& c : serial[0])
+  {
+    small += c.radius < 8.5 * spacing ? 1 : 0;
+    large += c.radius > 12 * spacing ? 1 : 0;
+  }
+  BOOST_TEST_MESSAGE("automatic radius below 8.5 spacings at " << small << " vertices, above 12 at " << large);
+  BOOST_TEST(small > 5000u);
+  BOOST_TEST(large > 5000u);
+  for(int run = 0; run < 3; ++run)
+    BOOST_TEST(same_bits(bits(serial), bits(CAS3::estimate_vertex_curvatures<CGAL::Parallel_tag>(mesh, neighborhoods, np))));
+}
+
 // A vertex point map that records the threads reading it once it has been
 // read `serial_reads` times (the positions are first copied serially, one
 // read per vertex); from then on, the first read of each thread waits (up

@@ -18,12 +18,12 @@
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_neighborhoods.h>
 
-#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -31,6 +31,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace CGAL {
@@ -109,8 +110,8 @@ struct Radius_fit
 // (two more rings, or the radius by 1.5 twice) before the vertex is given
 // up (NaN). Radii of at least `large_radius_in_edges` median edge lengths
 // are fitted at centers a seventh of the smallest such radius apart and
-// interpolated to the other vertices (internal/fit_centers.h);
-// `fit_at_centers()` runs those fits, before the vertices are estimated.
+// interpolated to the other vertices (internal/fit_centers.h); a
+// center's fits are made when a vertex first needs them.
 // A seventh: the interpolation is exact for curvature that varies linearly,
 // and its error on curvature that varies at the fit's own scale falls with
 // the square of the centers' spacing (the manual, "Neighborhoods"); 10.5
@@ -223,35 +224,18 @@ public:
         needed = (std::max)(needed, radius_level(rule.radius) + 1);
     if(automatic)
       m_first_levels = (std::min)(needed, m_fine_levels);
-  }
 
-  // The fits at the large radii at every center; serial or parallel as
-  // the tag says, with the same results.
-  template <typename ConcurrencyTag>
-  void fit_at_centers()
-  {
-    if(!m_centers)
-      return;
-    const std::size_t large = m_radii.size() - m_fine_levels;
-    const std::vector<double> radii(m_radii.begin() + std::ptrdiff_t(m_fine_levels), m_radii.end());
-    m_center_fits.assign(m_centers->size() * large, Center_fit());
-    for_each_index<ConcurrencyTag>(m_centers->size(), [&]() { return make_workspace(); },
-      [&](std::size_t c, Workspace& ws) {
-        const std::size_t v = m_centers->vertex[c];
-        if(!std::isfinite(m_normals[v].x()))
-          return;
-        const Tangent_frame f = frame_from_normal(m_normals[v]);
-        std::vector<Level_end> ends;
-        ws.search.balls(m_graph, v, radii);
-        prepare(v, f, radii.back(), large, ws, ends);
-        for(std::size_t j = 0; j < large; ++j)
-        {
-          Radius_fit q;
-          fit(f, ends[j], radii[j], radii.back(), ws, m_with_error[m_fine_levels + j] != 0, q);
-          if(q.defined)
-            m_center_fits[c * large + j].set(q.curvature, q.error);
-        }
-      });
+    m_large_radii.assign(m_radii.begin() + std::ptrdiff_t(m_fine_levels), m_radii.end());
+    for(const Neighborhood_rule& rule : rules)
+      if(rule.candidates.empty() && rule.radius > 0 && radius_level(rule.radius) >= m_fine_levels)
+        m_fixed_large_levels = (std::max)(m_fixed_large_levels, radius_level(rule.radius) - m_fine_levels + 1);
+    if(m_centers)
+    {
+      m_center_fits.assign(m_centers->size() * m_large_radii.size(), Center_fit());
+      m_center_state.reset(new std::atomic<std::uint32_t>[m_centers->size()]);
+      for(std::size_t c = 0; c < m_centers->size(); ++c)
+        m_center_state[c].store(0, std::memory_order_relaxed);
+    }
   }
 
   Workspace make_workspace() const { return Workspace(m_graph.size()); }
@@ -361,18 +345,68 @@ private:
     out.defined = ok && std::isfinite(out.curvature.k1) && std::isfinite(out.curvature.k2);
   }
 
-  // The fits at the large radii interpolated from the centers around v;
-  // the weights are computed again only where the centers with a fit change.
-  void interpolate_large_radii(std::size_t v, Workspace& ws) const
+  // Makes the fits at the first `levels` large radii at center c, unless
+  // made: by one thread, while the others that need them wait. A center's
+  // state is how many are made, with `busy` set while a thread makes more;
+  // the fits below that count are read without a lock. The fits do not
+  // depend on how many levels the search found, so which vertex asks
+  // first, on which thread, changes nothing.
+  void fit_at_center(std::size_t c, std::size_t levels, Workspace& ws) const
   {
-    const std::size_t large = m_radii.size() - m_fine_levels;
+    constexpr std::uint32_t busy = std::uint32_t(1) << 31;
+    std::atomic<std::uint32_t>& state = m_center_state[c];
+    std::uint32_t s = state.load(std::memory_order_acquire);
+    for(;;)
+    {
+      if((s & ~busy) >= levels)
+        return;
+      if(!(s & busy) && state.compare_exchange_weak(s, s | busy, std::memory_order_acquire))
+        break;
+      std::this_thread::yield();
+      s = state.load(std::memory_order_acquire);
+    }
+    const std::size_t made = s, large = m_large_radii.size(), v = m_centers->vertex[c];
+    try
+    {
+      if(std::isfinite(m_normals[v].x()))
+      {
+        const Tangent_frame f = frame_from_normal(m_normals[v]);
+        std::vector<Level_end> ends;
+        ws.search.balls(m_graph, v, m_large_radii, levels);
+        prepare(v, f, m_radii.back(), large, ws, ends);
+        for(std::size_t j = made; j < levels; ++j)
+        {
+          Radius_fit q;
+          fit(f, ends[j], m_large_radii[j], m_radii.back(), ws, m_with_error[m_fine_levels + j] != 0, q);
+          if(q.defined)
+            m_center_fits[c * large + j].set(q.curvature, q.error);
+        }
+      }
+    }
+    catch(...)
+    {
+      state.store(s, std::memory_order_release);  // not busy: a thread that waits takes over
+      throw;
+    }
+    state.store(std::uint32_t(levels), std::memory_order_release);
+  }
+
+  // The fits at the first `levels` large radii interpolated from the
+  // centers around v; the weights are computed again only where the
+  // centers with a fit change.
+  void interpolate_large_radii(std::size_t v, std::size_t levels, Workspace& ws) const
+  {
+    const std::size_t large = m_large_radii.size();
     const std::size_t own = m_centers->center_of[v];
+    fit_at_center(own, levels, ws);
+    for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
+      fit_at_center(m_centers->adjacent[e], levels, ws);
     ws.around.clear();
     ws.around.push_back(m_graph.points[m_centers->vertex[own]]);
     for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
       ws.around.push_back(m_graph.points[m_centers->vertex[m_centers->adjacent[e]]]);
     bool weighted = false;
-    for(std::size_t j = 0; j < large; ++j)
+    for(std::size_t j = 0; j < levels; ++j)
     {
       ws.around_fits.clear();
       ws.defined.clear();
@@ -450,10 +484,7 @@ private:
         choice_levels = levels;
     }
     if(m_centers)
-    {
-      CGAL_precondition(m_center_fits.size() == m_centers->size() * (m_radii.size() - m_fine_levels));
-      interpolate_large_radii(v, ws);
-    }
+      interpolate_large_radii(v, choice_levels < m_radii.size() ? m_fixed_large_levels : m_large_radii.size(), ws);
 
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
@@ -545,7 +576,11 @@ private:
   std::size_t m_first_levels = 0;  // of the fine radii, searched at every vertex
   std::shared_ptr<const Fit_centers> m_centers;
   double m_center_reach = 0;
-  std::vector<Center_fit> m_center_fits;  // by center, then large radius
+  std::vector<double> m_large_radii;
+  std::size_t m_fixed_large_levels = 0;  // the large radii that the fixed rules need, a prefix
+  // by center, then large radius; made as vertices need them (fit_at_center())
+  mutable std::vector<Center_fit> m_center_fits;
+  std::unique_ptr<std::atomic<std::uint32_t>[]> m_center_state;
 };
 
 // Estimates of every rule at every vertex of `graph`, each handed to
@@ -559,7 +594,6 @@ void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>
                               const std::vector<std::uint64_t>& center_keys, Write write)
 {
   Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, &center_keys);
-  estimation.fit_at_centers<ConcurrencyTag>();
   typedef Curvature_estimation::Workspace Workspace;
   struct Per_thread
   {
