@@ -222,13 +222,12 @@ public:
       }
       else if(rule.radius > 0 && radius_level(rule.radius) < m_fine_levels)
         needed = (std::max)(needed, radius_level(rule.radius) + 1);
+      else if(rule.radius > 0)  // a large radius, from the centers
+        m_fixed_large_levels = (std::max)(m_fixed_large_levels, radius_level(rule.radius) - m_fine_levels + 1);
     if(automatic)
       m_first_levels = (std::min)(needed, m_fine_levels);
 
     m_large_radii.assign(m_radii.begin() + std::ptrdiff_t(m_fine_levels), m_radii.end());
-    for(const Neighborhood_rule& rule : rules)
-      if(rule.candidates.empty() && rule.radius > 0 && radius_level(rule.radius) >= m_fine_levels)
-        m_fixed_large_levels = (std::max)(m_fixed_large_levels, radius_level(rule.radius) - m_fine_levels + 1);
     if(m_centers)
     {
       m_center_fits.assign(m_centers->size() * m_large_radii.size(), Center_fit());
@@ -399,12 +398,13 @@ private:
     const std::size_t large = m_large_radii.size();
     const std::size_t own = m_centers->center_of[v];
     fit_at_center(own, levels, ws);
-    for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
-      fit_at_center(m_centers->adjacent[e], levels, ws);
     ws.around.clear();
     ws.around.push_back(m_graph.points[m_centers->vertex[own]]);
     for(std::size_t e = m_centers->first[own]; e < m_centers->first[own + 1]; ++e)
+    {
+      fit_at_center(m_centers->adjacent[e], levels, ws);
       ws.around.push_back(m_graph.points[m_centers->vertex[m_centers->adjacent[e]]]);
+    }
     bool weighted = false;
     for(std::size_t j = 0; j < levels; ++j)
     {
