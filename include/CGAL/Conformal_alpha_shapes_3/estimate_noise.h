@@ -4,6 +4,7 @@
 #ifndef CGAL_CONFORMAL_ALPHA_SHAPES_3_ESTIMATE_NOISE_H
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_ESTIMATE_NOISE_H
 
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/order_free.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -52,6 +53,12 @@ struct Noise_estimate
 };
 
 namespace internal {
+
+// The most points whose fits make the estimate: all of a cloud up to this
+// size, so that the estimate is a function of the points alone (no sample
+// to choose); above, a sample this large leaves it within about 0.2% of
+// the estimate on any other sample.
+constexpr std::size_t noise_sample_size = 100000;
 
 // The median of a chi-squared variable with `nu` degrees of freedom over
 // `nu` (Wilson-Hilferty): dividing the median residual variance by it makes
@@ -124,16 +131,17 @@ inline bool cubic_fit_residual(const std::vector<Eigen::Vector3d>& neighbors, in
 \ingroup PkgConformalAlphaShapes3Multiscale
 
 The noise of a point sample of a surface, relative to its spacing (the
-manual, "Noise"). At up to 2000 points spread over the sample (chosen by
-their coordinates, so that any order of the same points gives the same
-estimate), a cubic height function is fitted by least squares to the 16
-(and 24) nearest points in their principal frame; the median residual
+manual, "Noise"). At every point (points written more than once counted
+once; above 100,000 points, at 100,000 of them chosen by their coordinates,
+so that any order of the same points gives the same estimate), a cubic
+height function is fitted by least squares to the 16 (and 24) nearest
+points in their principal frame; the median residual
 variance, made unbiased for Gaussian noise, gives the noise. A cubic
 follows curvature and its variation, so clean samples of smooth surfaces
 read near 0, detailed ones (fine bumps a few spacings wide) 0.011 or less;
 Gaussian noise of standard deviation `r` times the spacing reads `r`
 within 3% for `r` up to 0.5 (it saturates near 0.7 above). All zero for
-fewer than 25 points.
+fewer than 25 distinct points.
 */
 template <class PointRange>
 Noise_estimate estimate_noise(const PointRange& points)
@@ -144,20 +152,39 @@ Noise_estimate estimate_noise(const PointRange& points)
   typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
   const int small = 16, large = 24;
   Noise_estimate estimate;
-  const std::vector<Point> all(points.begin(), points.end());
+  // points written more than once are one point of the surface
+  std::vector<Point> all(points.begin(), points.end());
+  internal::sort_distinct<CGAL::Parallel_if_available_tag>(all.begin(), all.end(), [](const Point& p, const Point& q) {
+    return std::make_tuple(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()))
+           < std::make_tuple(CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z()));
+  });
+  all.erase(std::unique(all.begin(), all.end()), all.end());
   if(all.size() <= std::size_t(large))
     return estimate;
   typename Search::Tree tree(all.begin(), all.end());
-  // built on TBB's threads: the same tree as a serial build, for 2000 searches
+  // built on TBB's threads: the same tree as a serial build
   tree.template build<CGAL::Parallel_if_available_tag>();
-  std::vector<double> variances_small, variances_large;
-  double spacing_sum = 0;
-  std::vector<std::pair<double, Eigen::Vector3d> > hits;  // squared distance, point
-  std::vector<Eigen::Vector3d> neighbors;
-  for(const std::size_t s : internal::order_free_sample(all, 2000))
+  // every point up to noise_sample_size, in the order of their keys (the
+  // sums then do not depend on the input's order); above, the points of
+  // the smallest keys
+  const std::vector<std::size_t> sample = all.size() <= internal::noise_sample_size
+                                            ? internal::order_free_permutation(all)
+                                            : internal::order_free_sample(all, internal::noise_sample_size);
+  struct Fit
   {
-    const Point& p = all[s];
-    hits.clear();
+    double variance_small = 0, variance_large = 0, spacing = 0;
+    bool defined = false;
+  };
+  std::vector<Fit> fits(sample.size());
+  struct Workspace
+  {
+    std::vector<std::pair<double, Eigen::Vector3d> > hits;  // squared distance, point
+    std::vector<Eigen::Vector3d> neighbors;
+  };
+  internal::for_each_index<CGAL::Parallel_if_available_tag>(sample.size(), []() { return Workspace(); },
+                                                            [&](std::size_t i, Workspace& ws) {
+    const Point& p = all[sample[i]];
+    ws.hits.clear();
     bool self_skipped = false;
     for(const auto& hit : Search(tree, p, large))
     {
@@ -166,27 +193,33 @@ Noise_estimate estimate_noise(const PointRange& points)
         self_skipped = true;
         continue;
       }
-      hits.emplace_back(CGAL::to_double(hit.second),
-                        Eigen::Vector3d(CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
-                                        CGAL::to_double(hit.first.z())));
+      ws.hits.emplace_back(CGAL::to_double(hit.second),
+                           Eigen::Vector3d(CGAL::to_double(hit.first.x()), CGAL::to_double(hit.first.y()),
+                                           CGAL::to_double(hit.first.z())));
     }
     // neighbors at equal distance in the order of their coordinates, not
     // in the order the tree (built from the input order) gives them
-    std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) {
+    std::sort(ws.hits.begin(), ws.hits.end(), [](const auto& a, const auto& b) {
       return std::make_tuple(a.first, a.second.x(), a.second.y(), a.second.z())
              < std::make_tuple(b.first, b.second.x(), b.second.y(), b.second.z());
     });
-    neighbors.assign(1, Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
-    for(const auto& hit : hits)
-      neighbors.push_back(hit.second);
-    double variance_small = 0, variance_large = 0, spacing = 0, ignored = 0;
-    if(!internal::cubic_fit_residual(neighbors, small, variance_small, spacing)
-       || !internal::cubic_fit_residual(neighbors, large, variance_large, ignored))
-      continue;
-    variances_small.push_back(variance_small);
-    variances_large.push_back(variance_large);
-    spacing_sum += spacing;
-  }
+    ws.neighbors.assign(1, Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())));
+    for(const auto& hit : ws.hits)
+      ws.neighbors.push_back(hit.second);
+    Fit& f = fits[i];
+    double ignored = 0;
+    f.defined = internal::cubic_fit_residual(ws.neighbors, small, f.variance_small, f.spacing)
+                && internal::cubic_fit_residual(ws.neighbors, large, f.variance_large, ignored);
+  });
+  std::vector<double> variances_small, variances_large;
+  double spacing_sum = 0;
+  for(const Fit& f : fits)
+    if(f.defined)
+    {
+      variances_small.push_back(f.variance_small);
+      variances_large.push_back(f.variance_large);
+      spacing_sum += f.spacing;
+    }
   if(variances_small.empty() || !(spacing_sum > 0))
     return estimate;
   estimate.spacing = spacing_sum / double(variances_small.size());

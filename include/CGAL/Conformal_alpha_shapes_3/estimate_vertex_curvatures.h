@@ -174,14 +174,14 @@ inline Neighborhood_rule neighborhood_rule(const Neighborhood& neighborhood, dou
   return rule;
 }
 
-// By vertex index, the keys of `fit_center_key_map`, or the hashes of the
-// vertices' positions in `graph`.
+// By vertex index, the keys of `fit_center_key_map`, or those of the
+// shapes of the vertices' stars in `graph`.
 template <typename PolygonMesh, typename VertexIndexMap, typename NamedParameters>
 std::vector<std::uint64_t> fit_center_keys(const PolygonMesh& pmesh, const VertexIndexMap& vertex_index,
                                            const Vertex_graph& graph, const NamedParameters& np)
 {
   if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, internal_np_cas3::fit_center_key_map_t>::value)
-    return coordinate_hashes(graph.points);
+    return star_shape_keys(graph);
   else
   {
     const auto given = CGAL::parameters::get_parameter(np, internal_np_cas3::fit_center_key_map);
@@ -254,9 +254,11 @@ Neighborhood, by the first of these named parameters given:
   operators are interpolated as tensors, the normals as vectors), at a
   fraction of the cost of a fit at every vertex (manual, "Neighborhoods").
   The centers are chosen greedily in a pseudo-random order given by a key
-  per vertex (`fit_center_key_map`), so that the values do not depend on
-  the vertices' numbering, and a part of the mesh (a tile) gets the
-  centers of the whole mesh away from its borders.
+  per vertex (`fit_center_key_map`; by default a hash of the shape of its
+  star, the lengths of its edges relative to the longest), so that the
+  values depend neither on the vertices' numbering nor on a rigid motion or
+  a scaling of the mesh, and a part of the mesh (a tile) gets the centers
+  of the whole mesh away from its borders.
 - `ring_size`: the `k`-ring of the vertex; up to two more rings are used when
   it is too small.
 
@@ -340,9 +342,9 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamDefault{0: measured at each vertex from the fits}
   \cgalParamNEnd
   \cgalParamNBegin{fit_center_key_map}
-    \cgalParamDescription{the keys of the vertices in whose increasing order the large radii's centers are chosen (ties by position); give the same keys to the same points of two meshes (for example a hash of each vertex's original position, when the positions were smoothed or moved to another frame, as `Multiscale_curvatures` gives) to get the same centers where the meshes agree}
+    \cgalParamDescription{the keys of the vertices in whose increasing order the large radii's centers are chosen (ties by position); the same keys for the same vertices of two meshes give the same centers where the meshes agree}
     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::uint64_t` as value}
-    \cgalParamDefault{a hash of the vertex's coordinates}
+    \cgalParamDefault{a hash of the lengths of the vertex's edges relative to the longest: the same on a moved, turned or scaled copy of the mesh}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 

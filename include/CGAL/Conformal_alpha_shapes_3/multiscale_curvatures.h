@@ -126,9 +126,14 @@ public:
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{reference_normals}
-      \cgalParamDescription{a normal per input point (a scanner's), or an empty vector: each part of a surface is oriented by the majority of its points' normals, and each point's values by its own normal (see `transfer_to_points()`)}
+      \cgalParamDescription{a normal per input point (a scanner's), or an empty vector: each sheet of a surface on which they are consistent is oriented by the majority of its points' normals, the others as without normals (`extract_surface()`); a point's values follow its sheet}
       \cgalParamType{`std::vector<Vector>`}
       \cgalParamDefault{empty}
+    \cgalParamNEnd
+    \cgalParamNBegin{orient_each_point}
+      \cgalParamDescription{with `reference_normals`, whether each point's values are turned to its own normal's side (see `transfer_to_points()`) rather than following its sheet}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
     \cgalParamNEnd
     \cgalParamNBegin{noise_estimate}
       \cgalParamDescription{the spacing (in input units) and noise (in spacings) of a larger cloud these points are part of, such as the `noise()` of a run on the whole cloud when each tile is run alone: used instead of an estimate on these points, so that `noise()`, radii in spacings, the automatic radius, the noise level of the curvature fits and the denoising decision are those of the larger run}
@@ -172,6 +177,7 @@ public:
     m_extraction = choose_parameter(get_parameter(np, internal_np_cas3::surface_extraction), ADVANCING_FRONT);
     m_reference_normals = choose_parameter(get_parameter(np, internal_np_cas3::reference_normals),
                                            std::vector<Vector>());
+    m_orient_each_point = choose_parameter(get_parameter(np, internal_np_cas3::orient_each_point), false);
     m_input = internal::normalize_input<Kernel>(std::vector<Point>(first, last));
     if(!m_reference_normals.empty() && m_reference_normals.size() != m_input.is_outlier.size())
       throw std::invalid_argument("Multiscale_curvatures: " + std::to_string(m_reference_normals.size())
@@ -186,6 +192,8 @@ public:
     m_kept_index.assign(m_input.is_outlier.size(), std::size_t(-1));
     for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
       m_kept_index[m_input.input_index[i]] = i;
+    for(const std::pair<std::size_t, std::size_t>& copy : m_input.copies)
+      m_kept_index[copy.first] = m_kept_index[copy.second];
     std::vector<Point> points = std::move(m_input.points);
     m_input.points = std::vector<Point>();
 
@@ -207,6 +215,9 @@ public:
   const Shape& shape() const { return m_shape; }
   /// the number of input points
   std::size_t number_of_input_points() const { return m_input.is_outlier.size(); }
+  /// the number of input points equal to an earlier input point, merged
+  /// into it before any estimate: they get the values of that point
+  std::size_t number_of_merged_points() const { return m_input.number_of_copies; }
   /// the input indices of the isolated far outliers, left off every surface (increasing)
   const std::vector<std::size_t>& outliers() const { return m_input.outliers; }
   /// whether input point `i` is an isolated far outlier
@@ -287,9 +298,16 @@ public:
       input_index[v] = m_input.input_index[input_index[v]];
       surface.point(v) = m_input.to_input(surface.point(v));
     }
-    // the outliers are input points too, off every surface
+    // the outliers are input points too, off every surface, and the
+    // copies of a point are where their first is
+    std::vector<bool> on_surface(number_of_input_points(), false);
+    for(Surface_vertex v : surface.vertices())
+      on_surface[input_index[v]] = true;
+    for(const std::pair<std::size_t, std::size_t>& copy : m_input.copies)
+      if(!on_surface[copy.second])
+        ++report.number_of_points_off_surface;
     report.number_of_points_off_surface += m_input.outliers.size();
-    report.number_of_input_points += m_input.outliers.size();
+    report.number_of_input_points += m_input.outliers.size() + m_input.copies.size();
     return report;
   }
 
@@ -403,8 +421,6 @@ private:
         n.kind() == Neighborhood::RADIUS ? Neighborhood::radius(m_input.length_from_input(n.value())) : n);
     const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
     auto shape_index = [&](Surface_vertex v) { return m_kept_index[input_index[v]]; };
-    // the centers follow the input's coordinates, which a tile of the cloud has to the bit
-    auto input_key = [&](Surface_vertex v) { return m_input.key[shape_index(v)]; };
     const auto vertex_index = CGAL::get_initialized_vertex_index_map(surface, CGAL::parameters::default_values());
 
     // transfer_to_points() in steps: what it reads of the shape is taken
@@ -427,8 +443,7 @@ private:
       estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
         surface, in_working_frame,
         parameters::sample_spacing(m_noise.spacing, parameters::noise_level(m_noise.noise * m_noise.spacing,
-          parameters::fit_center_key_map(boost::make_function_property_map<Surface_vertex>(input_key),
-            parameters::estimator(estimator).vertex_point_map(working)))));
+          parameters::estimator(estimator).vertex_point_map(working))));
 
     // then the feet of the surface's vertices without a value in some
     // layer: they lie on the surface, never far from it
@@ -445,6 +460,8 @@ private:
 
     std::vector<Point_curvature<Kernel> > layer;
     auto hand_over = [&](std::size_t k) {
+      for(const std::pair<std::size_t, std::size_t>& copy : m_input.copies)
+        layer[copy.first] = layer[copy.second];
       layer_done(k, std::move(layer));
       std::vector<Point_curvature<Kernel> >().swap(layer);  // in case `layer_done` did not take it
     };
@@ -461,7 +478,7 @@ private:
         layer.resize(number_of_input_points());
         return internal::Input_units_writer<Kernel>{&m_input, &layer};
       },
-      m_reference_normals);
+      m_orient_each_point ? m_reference_normals : std::vector<Vector>());
     if(!values.empty())
       hand_over(values.size() - 1);
   }
@@ -506,6 +523,7 @@ private:
   Shape m_shape;
   Surface_extraction m_extraction = ADVANCING_FRONT;
   std::vector<Vector> m_reference_normals;
+  bool m_orient_each_point = false;
   Noise_estimate m_noise;
   Denoising_plan m_denoising;
   mutable double m_suggested = -1;

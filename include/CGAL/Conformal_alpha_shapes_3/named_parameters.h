@@ -36,6 +36,7 @@ enum noise_level_t { noise_level };
 enum sample_spacing_t { sample_spacing };
 enum noise_estimate_t { noise_estimate };
 enum fit_center_key_map_t { fit_center_key_map };
+enum orient_each_point_t { orient_each_point };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -92,6 +93,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(noise_level)
 CGAL_CAS3_ADD_NAMED_PARAMETER(sample_spacing)
 CGAL_CAS3_ADD_NAMED_PARAMETER(noise_estimate)
 CGAL_CAS3_ADD_NAMED_PARAMETER(fit_center_key_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(orient_each_point)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

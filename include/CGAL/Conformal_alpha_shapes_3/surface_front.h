@@ -151,9 +151,14 @@ private:
       shape_vertex[v->vertex_index()] = v;
     auto point = [&](std::size_t s) { return shape_vertex[soup.shape_vertex[s]]->point(); };
     const bool has_reference = !reference_normals.empty();
-    auto reference = [&](std::size_t s) {
+    auto given = [&](std::size_t s) {
       return Vector(reference_normals[*cas.input_indices(shape_vertex[soup.shape_vertex[s]]).begin()]);
     };
+    std::vector<Vector> follow;
+    if(has_reference)
+      follow = internal::normals_to_follow<Vector>(soup, cas.number_of_vertices(), point, given,
+                                                   report.number_of_sheets_with_inconsistent_normals);
+    auto reference = [&](std::size_t s) { return follow[soup.shape_vertex[s]]; };
     // each step below is a pass over the soup: checked between them, and
     // within the passes that build the mesh
     internal::Interruption_point interruption;
@@ -199,6 +204,8 @@ private:
       if(CGAL::Euler::add_face(face, pmesh) != boost::graph_traits<PolygonMesh>::null_face())
         ++report.number_of_faces;
     }
+    if(has_reference)
+      report.reference_normal_agreement = internal::reference_agreement<Vector>(soup, parts, reverse, point, given);
 
     std::vector<char> on(cas.number_of_vertices(), 0);
     for(std::size_t s : soup.shape_vertex)

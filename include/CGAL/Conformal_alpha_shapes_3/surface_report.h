@@ -5,6 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_SURFACE_REPORT_H
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -46,8 +47,15 @@ struct Surface_report
   /// pieces grown separately that were turned to follow the orientation
   /// rule (from the canonical orientation in which the front is kept)
   std::size_t number_of_reversed_parts = 0;
-  /// whether reference normals decided the orientation
+  /// whether reference normals were given
   bool oriented_by_reference_normals = false;
+  /// sheets whose reference normals are not consistent (about as many
+  /// point to one side as to the other: random signs), oriented as
+  /// without reference normals
+  std::size_t number_of_sheets_with_inconsistent_normals = 0;
+  /// the share of the surface's vertices whose reference normal points to
+  /// the side their sheet faces (NaN without reference normals)
+  double reference_normal_agreement = std::numeric_limits<double>::quiet_NaN();
   /// @}
 
   /// \name Solid boundary

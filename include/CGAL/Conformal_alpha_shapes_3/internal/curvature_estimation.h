@@ -583,15 +583,12 @@ private:
   std::unique_ptr<std::atomic<std::uint32_t>[]> m_center_state;
 };
 
-// Estimates of every rule at every vertex of `graph`, each handed to
-// `write(rule, vertex index, estimate)` once, from TBB's threads as the tag
-// says: the callers keep them in their own form, without a copy of every
-// layer in this one.
+// estimate_at_every_vertex() of rules that share one pass.
 template <typename ConcurrencyTag, typename Write>
-void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>& normals,
-                              const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                              double sample_noise, double sample_spacing,
-                              const std::vector<std::uint64_t>& center_keys, Write write)
+void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& normals,
+                          const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
+                          double sample_noise, double sample_spacing,
+                          const std::vector<std::uint64_t>& center_keys, Write write)
 {
   Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, &center_keys);
   typedef Curvature_estimation::Workspace Workspace;
@@ -607,6 +604,44 @@ void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>
       for(std::size_t r = 0; r < rules.size(); ++r)
         write(r, v, thread.estimates[r]);
     });
+}
+
+// Estimates of every rule at every vertex of `graph`, each handed to
+// `write(rule, vertex index, estimate)` once, from TBB's threads as the tag
+// says: the callers keep them in their own form, without a copy of every
+// layer in this one.
+// The rules share one pass (one search per vertex) where that leaves the
+// automatic rules' values as they are alone: the fits at the candidate
+// radii sum the same shells in the same units with the fixed radii among
+// the candidates, not with others, which then get a pass of their own.
+template <typename ConcurrencyTag, typename Write>
+void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>& normals,
+                              const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
+                              double sample_noise, double sample_spacing,
+                              const std::vector<std::uint64_t>& center_keys, Write write)
+{
+  std::vector<double> candidates;
+  for(const Neighborhood_rule& rule : rules)
+    candidates.insert(candidates.end(), rule.candidates.begin(), rule.candidates.end());
+  std::vector<std::size_t> shared, apart;  // rule indices
+  for(std::size_t r = 0; r < rules.size(); ++r)
+  {
+    const bool alone = !candidates.empty() && rules[r].candidates.empty() && rules[r].radius > 0
+                       && std::find(candidates.begin(), candidates.end(), rules[r].radius) == candidates.end();
+    (alone ? apart : shared).push_back(r);
+  }
+  for(const std::vector<std::size_t>* pass : {&shared, &apart})
+  {
+    if(pass->empty())
+      continue;
+    std::vector<Neighborhood_rule> pass_rules;
+    for(std::size_t r : *pass)
+      pass_rules.push_back(rules[r]);
+    estimate_in_one_pass<ConcurrencyTag>(graph, normals, pass_rules, estimator, sample_noise, sample_spacing,
+                                         center_keys, [&](std::size_t k, std::size_t v, const Vertex_estimate& e) {
+                                           write((*pass)[k], v, e);
+                                         });
+  }
 }
 
 // The Chen-Wu normal of every vertex, by vertex index.

@@ -45,6 +45,31 @@ inline double median_edge_length(const Vertex_graph& g)
   return lengths[lengths.size() / 2];
 }
 
+// A key per vertex of `g` from the shape of its star alone: the lengths of
+// its edges divided by the longest, in increasing order, each rounded to
+// 2^-20 and mixed into a hash. Rigid motions, uniform scaling, the
+// vertices' numbering and the part of the surface held (away from its
+// border) leave a key unchanged, but where a ratio lies within rounding of
+// a step, so the centers chosen in the order of these keys are those of any
+// copy of the same surface.
+inline std::vector<std::uint64_t> star_shape_keys(const Vertex_graph& g)
+{
+  std::vector<std::uint64_t> keys(g.size());
+  std::vector<double> lengths;
+  for(std::size_t v = 0; v < g.size(); ++v)
+  {
+    lengths.clear();
+    for(std::size_t e = g.first[v]; e < g.first[v + 1]; ++e)
+      lengths.push_back((g.points[g.adjacent[e]] - g.points[v]).norm());
+    std::sort(lengths.begin(), lengths.end());
+    std::uint64_t h = mix_hash(0, lengths.size());
+    for(double l : lengths)
+      h = mix_hash(h, std::uint64_t(std::ldexp(l / lengths.back(), 20)));
+    keys[v] = h;
+  }
+  return keys;
+}
+
 // Centers more than `spacing` apart such that every vertex is within
 // `spacing` of one, connected to it inside that ball, chosen greedily in
 // the order of `keys` (by vertex; ties by position). Any order gives a

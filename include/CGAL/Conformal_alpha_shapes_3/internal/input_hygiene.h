@@ -9,9 +9,12 @@
 //
 // 1. Every coordinate must be finite; otherwise std::invalid_argument names
 //    the first offending index.
-// 2. Isolated far outliers are removed and flagged. With d_k(p) the distance
-//    from p to its k-th nearest other input point (k = 6; coincident points
-//    count), a point is an isolated outlier when
+// 2. Points written more than once (equal coordinates) are merged into
+//    their first copy: what follows sees each point once, and the copies
+//    get the values of their first (an outlier's copies are outliers).
+// 3. Isolated far outliers are removed and flagged. With d_k(p) the distance
+//    from p to its k-th nearest other point (k = 6), a point is an isolated
+//    outlier when
 //      d_k(p) > 30 * m, m the median of the positive d_k over all points, and
 //      d_k(p) > 30 * the median of d_k over p's k nearest neighbors.
 //    The second condition keeps the points of a real cluster that is just
@@ -20,9 +23,8 @@
 //    group that small can make a surface patch of its own). Points whose
 //    distance to the robust center exceeds 1e50 robust sizes are outliers
 //    without further test (no double construction could hold both them and
-//    the rest). With fewer than 2 (k + 1) points, or when fewer than half
-//    the points have a positive d_k (mostly duplicates), no point is tested.
-// 3. The kept points are recentered on a robust center c, the per-axis
+//    the rest). With fewer than 2 (k + 1) points no point is tested.
+// 4. The kept points are recentered on a robust center c, the per-axis
 //    median of the kept points, and divided by a robust size s, a power of
 //    two within a factor 2 of the median over the kept points of the
 //    largest coordinate difference to c (the largest distance to c when
@@ -56,6 +58,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -119,9 +122,10 @@ struct Normalized_input
   typedef typename Kernel::Vector_3 Vector;
 
   std::vector<Point> points;              // the kept points, normalized
-  std::vector<std::size_t> input_index;   // kept point -> input index
-  std::vector<std::uint64_t> key;         // kept point -> hash of its input coordinates, the same in any frame
-  std::vector<std::size_t> outliers;      // input indices of the removed points, increasing
+  std::vector<std::size_t> input_index;   // kept point -> input index (of the first copy)
+  std::vector<std::pair<std::size_t, std::size_t> > copies;  // later copies of kept points: (input index, first's)
+  std::size_t number_of_copies = 0;       // input points equal to an earlier one, outliers' copies too
+  std::vector<std::size_t> outliers;      // input indices of the removed points (and their copies), increasing
   std::vector<bool> is_outlier;           // by input index
   std::array<double, 3> center = {{0, 0, 0}};  // c, in input units
   int size_exponent = 0;                  // s = 2^size_exponent
@@ -200,6 +204,25 @@ int size_exponent(const std::vector<Point>& p, const std::vector<std::size_t>& w
 
 } // namespace hygiene_detail
 
+// By input index, the index of the first input point with the same
+// coordinates (the point itself for a first copy).
+template <class Point>
+std::vector<std::size_t> first_copies(const std::vector<Point>& p)
+{
+  std::vector<std::size_t> order(p.size()), first(p.size());
+  for(std::size_t i = 0; i < p.size(); ++i)
+    order[i] = i;
+  auto key = [&](std::size_t i) {
+    return std::make_tuple(CGAL::to_double(p[i].x()) + 0.0, CGAL::to_double(p[i].y()) + 0.0,
+                           CGAL::to_double(p[i].z()) + 0.0, i);
+  };
+  sort_distinct<CGAL::Parallel_if_available_tag>(order.begin(), order.end(),
+                                                 [&](std::size_t i, std::size_t j) { return key(i) < key(j); });
+  for(std::size_t k = 0; k < order.size(); ++k)
+    first[order[k]] = k > 0 && p[order[k]] == p[order[k - 1]] ? first[order[k - 1]] : order[k];
+  return first;
+}
+
 // Normalizes `input` and removes isolated far outliers (rules above).
 // Throws std::invalid_argument naming the first point with a NaN or
 // infinite coordinate.
@@ -210,14 +233,24 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
   typedef typename Kernel::Point_3 Point;
   using hygiene_detail::median;
   Normalized_input<Kernel> result;
-  const std::vector<Point> p(input.begin(), input.end());
-  const std::size_t n = p.size();
+  std::vector<Point> p(input.begin(), input.end());
   check_coordinates(p, "", false);
+  result.is_outlier.assign(p.size(), false);
+  // the copies of a point are merged into its first: the rest sees each point once
+  const std::vector<std::size_t> first = first_copies(p);
+  std::vector<std::size_t> distinct;  // distinct point -> input index
+  for(std::size_t i = 0; i < p.size(); ++i)
+    if(first[i] == i)
+      distinct.push_back(i);
+  for(std::size_t j = 0; j < distinct.size(); ++j)
+    p[j] = p[distinct[j]];
+  p.resize(distinct.size());
+  const std::size_t n = p.size();
 
   std::vector<std::size_t> all(n);
   for(std::size_t i = 0; i < n; ++i)
     all[i] = i;
-  result.is_outlier.assign(n, false);
+  std::vector<bool> is_outlier(n, false);  // by distinct point
 
   const unsigned int k = (std::max)(options.k, 1u);
   if(options.remove_outliers && n >= 2 * (std::size_t(k) + 1))
@@ -236,7 +269,7 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
       const Point x = result.to_normalized(p[i]);
       const double r = (std::max)({std::abs(x.x()), std::abs(x.y()), std::abs(x.z())});
       if(r > 1e50)
-        result.is_outlier[i] = true;
+        is_outlier[i] = true;
       else
         tested.emplace_back(x, i);
     }
@@ -308,24 +341,37 @@ Normalized_input<Kernel> normalize_input(const PointRange& input,
           for(unsigned int j = 0; j < k; ++j)
             around[j] = dk[neighbors[i * k + j]];
           if(dk[i] > options.isolation_factor * median(around))
-            result.is_outlier[near[i]] = true;
+            is_outlier[near[i]] = true;
         }
       }
     }
   }
 
-  for(std::size_t i = 0; i < n; ++i)
-    (result.is_outlier[i] ? result.outliers : result.input_index).push_back(i);
+  std::vector<std::size_t> kept;  // distinct points
+  for(std::size_t j = 0; j < n; ++j)
+    if(is_outlier[j])
+      result.is_outlier[distinct[j]] = true;
+    else
+      kept.push_back(j);
+  for(std::size_t i = 0; i < first.size(); ++i)
+  {
+    result.is_outlier[i] = result.is_outlier[first[i]];
+    if(result.is_outlier[i])
+      result.outliers.push_back(i);
+    else if(first[i] != i)
+      result.copies.emplace_back(i, first[i]);
+  }
+  result.number_of_copies = first.size() - n;
 
   // the final normalization, on the kept points only
-  result.center = hygiene_detail::median_center(p, result.input_index);
-  result.size_exponent = hygiene_detail::size_exponent(p, result.input_index, result.center);
-  result.points.reserve(result.input_index.size());
-  result.key.reserve(result.input_index.size());
-  for(std::size_t i : result.input_index)
+  result.center = hygiene_detail::median_center(p, kept);
+  result.size_exponent = hygiene_detail::size_exponent(p, kept, result.center);
+  result.points.reserve(kept.size());
+  result.input_index.reserve(kept.size());
+  for(std::size_t j : kept)
   {
-    result.points.push_back(result.to_normalized(p[i]));
-    result.key.push_back(coordinate_hash(p[i]));
+    result.points.push_back(result.to_normalized(p[j]));
+    result.input_index.push_back(distinct[j]);
   }
   return result;
 }

@@ -388,6 +388,82 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
   return reverse;
 }
 
+// With reference normals, which of them to follow: the soup is first
+// oriented as without them; on each sheet the given normals are consistent
+// when at least `consistent_share` of its triangles' corners agree with that
+// orientation, or as many disagree (a scanner's normals, an oriented
+// reconstruction's, flipped or not; random signs agree at about half).
+// Returns by shape vertex (`soup.shape_vertex`) the normal to follow: the
+// given one on a consistent sheet, else the vertex's normal in that first
+// orientation, so that such a sheet is oriented as without reference
+// normals; `inconsistent_sheets` counts those sheets.
+constexpr double consistent_share = 0.75;
+
+template <class Vector, class PointOf, class ReferenceOf>
+std::vector<Vector> normals_to_follow(const Advancing_front_soup& soup, std::size_t number_of_shape_vertices,
+                                      const PointOf& point, const ReferenceOf& reference,
+                                      std::size_t& inconsistent_sheets)
+{
+  const Soup_parts parts = soup_parts(soup);
+  const Soup_sheets sheets = soup_sheets(soup, parts);
+  const Sheet_groups groups = join_open_sheets_across_gaps<Vector>(soup, parts, sheets, point);
+  const std::vector<char> reverse = parts_to_reverse<Vector>(soup, parts, sheets, groups, point, reference, false);
+  std::vector<std::size_t> agree(sheets.size(), 0), disagree(sheets.size(), 0);
+  std::vector<std::size_t> sheet_of_vertex(soup.shape_vertex.size(), 0);
+  std::vector<Vector> oriented(soup.shape_vertex.size(), Vector(0, 0, 0));
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const std::array<std::size_t, 3>& tri = soup.triangles[t];
+    const std::size_t part = parts.part_of_triangle[t];
+    Vector area_normal = CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0]));
+    if(reverse[part])
+      area_normal = -area_normal;
+    const std::size_t sheet = sheets.sheet_of_part[part];
+    for(std::size_t s : tri)
+    {
+      const double d = CGAL::to_double(area_normal * reference(s));
+      agree[sheet] += d > 0 ? 1 : 0;
+      disagree[sheet] += d < 0 ? 1 : 0;
+      oriented[s] = oriented[s] + area_normal;
+      sheet_of_vertex[s] = sheet;
+    }
+  }
+  std::vector<char> consistent(sheets.size(), 0);
+  inconsistent_sheets = 0;
+  for(std::size_t sheet = 0; sheet < sheets.size(); ++sheet)
+  {
+    const double votes = double(agree[sheet] + disagree[sheet]);
+    consistent[sheet] = votes > 0 && double((std::max)(agree[sheet], disagree[sheet])) >= consistent_share * votes;
+    inconsistent_sheets += consistent[sheet] ? 0 : 1;
+  }
+  std::vector<Vector> follow(number_of_shape_vertices, Vector(0, 0, 0));
+  for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
+    follow[soup.shape_vertex[s]] = consistent[sheet_of_vertex[s]] ? Vector(reference(s)) : oriented[s];
+  return follow;
+}
+
+// The share of the soup's vertices whose reference normal points to the
+// side their sheet faces once the parts in `reverse` are turned.
+template <class Vector, class PointOf, class ReferenceOf>
+double reference_agreement(const Advancing_front_soup& soup, const Soup_parts& parts,
+                           const std::vector<char>& reverse, const PointOf& point, const ReferenceOf& reference)
+{
+  std::vector<Vector> oriented(soup.shape_vertex.size(), Vector(0, 0, 0));
+  for(std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const std::array<std::size_t, 3>& tri = soup.triangles[t];
+    Vector area_normal = CGAL::cross_product(point(tri[1]) - point(tri[0]), point(tri[2]) - point(tri[0]));
+    if(reverse[parts.part_of_triangle[t]])
+      area_normal = -area_normal;
+    for(std::size_t s : tri)
+      oriented[s] = oriented[s] + area_normal;
+  }
+  std::size_t agreeing = 0;
+  for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
+    agreeing += CGAL::to_double(oriented[s] * reference(s)) > 0 ? 1 : 0;
+  return soup.shape_vertex.empty() ? 1.0 : double(agreeing) / double(soup.shape_vertex.size());
+}
+
 } // namespace internal
 } // namespace Conformal_alpha_shapes_3
 } // namespace CGAL
