@@ -25,7 +25,9 @@
 
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -222,6 +224,8 @@ py::dict report_dict(const CAS3::Surface_report& r)
   d["closed_parts"] = r.number_of_closed_parts;
   d["points_off_surface"] = r.number_of_points_off_surface;
   d["fraction_of_points_on_surface"] = r.fraction_of_points_on_surface();
+  d["sheets_with_inconsistent_normals"] = r.number_of_sheets_with_inconsistent_normals;
+  d["normal_agreement"] = r.reference_normal_agreement;
   return d;
 }
 
@@ -375,6 +379,7 @@ public:
     result["spacing"] = noise.spacing;
     result["noise"] = noise.noise;
     result["denoised"] = denoising.passes > 0;
+    result["merged"] = analysis.number_of_merged_points();
     result["denoising_passes"] = denoising.passes;
     result["denoising_neighbors"] = denoising.neighbors;
     release();
@@ -641,19 +646,75 @@ py::dict vertex_curvatures(const Doubles& vertices_array,
 }
 
 // The isolated far outliers of the points, by the rule of the pipeline's
-// input hygiene (the manual, "Input Rules"): a tiled run applies it to each
+// input hygiene (the manual, "Input Rules"), and the later copies of the
+// points kept (equal to an earlier point): a tiled run applies it to each
 // tile with its halo before its global noise estimate.
-py::array_t<bool> input_outliers(const Doubles& points_array)
+py::tuple input_outliers(const Doubles& points_array)
 {
   const std::vector<Point> points = to_triples<Point>(points_array, "points");
-  std::vector<bool> is_outlier;
+  CAS3::internal::Normalized_input<K> input;
   without_gil([&] {
-    is_outlier = CAS3::internal::normalize_input<K>(points).is_outlier;
+    input = CAS3::internal::normalize_input<K>(points);
     return 0;
   });
-  py::array_t<bool> out = new_array<bool>(points.size());
+  py::array_t<bool> outlier = new_array<bool>(points.size()), copy = new_array<bool>(points.size());
   for(std::size_t i = 0; i < points.size(); ++i)
-    out.mutable_data()[i] = is_outlier[i];
+  {
+    outlier.mutable_data()[i] = input.is_outlier[i];
+    copy.mutable_data()[i] = false;
+  }
+  for(const auto& c : input.copies)
+    copy.mutable_data()[c.first] = true;
+  return py::make_tuple(outlier, copy);
+}
+
+// The rows of `points` among the `k` nearest of each of `rows` (itself
+// included, ties at the k-th distance included), increasing: what the fits
+// of the noise estimate at those rows read.
+py::array_t<std::int64_t> nearest_rows(const Doubles& points_array, const py::array_t<std::int64_t>& rows_array,
+                                       unsigned int k)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  const std::vector<std::int64_t> rows(rows_array.data(), rows_array.data() + rows_array.size());
+  for(std::int64_t r : rows)
+    if(r < 0 || std::size_t(r) >= points.size())
+      throw py::value_error("nearest_rows: row " + std::to_string(r) + " is not a row of the points");
+  std::vector<std::int64_t> found;
+  without_gil([&] {
+    typedef CGAL::Search_traits_3<K> Base_traits;
+    typedef CGAL::Search_traits_adapter<std::size_t, CGAL::Pointer_property_map<Point>::const_type, Base_traits> Traits;
+    typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+    const auto point_map = CGAL::make_property_map(points);
+    std::vector<std::size_t> ids(points.size());
+    std::iota(ids.begin(), ids.end(), std::size_t(0));
+    typename Search::Tree tree(ids.begin(), ids.end(), typename Search::Tree::Splitter(), Traits(point_map));
+    const typename Search::Distance distance(point_map);
+    std::vector<char> taken(points.size(), 0);
+    for(std::int64_t r : rows)
+    {
+      // past the k-th distance by one more than the ties seen so far, until no tie is left out
+      for(unsigned int more = 1;; more *= 2)
+      {
+        std::vector<std::pair<std::size_t, double> > hits;
+        for(const auto& hit : Search(tree, points[std::size_t(r)], k + more, 0, true, distance))
+          hits.emplace_back(hit.first, hit.second);
+        const double limit = hits.size() >= k ? hits[k - 1].second * (1 + 1e-9) : std::numeric_limits<double>::infinity();
+        if(hits.size() < k + more || hits.back().second > limit)
+        {
+          for(const auto& hit : hits)
+            if(hit.second <= limit)
+              taken[hit.first] = 1;
+          break;
+        }
+      }
+    }
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(taken[i])
+        found.push_back(std::int64_t(i));
+    return 0;
+  });
+  py::array_t<std::int64_t> out = new_array<std::int64_t>(found.size());
+  std::copy(found.begin(), found.end(), out.mutable_data());
   return out;
 }
 
@@ -721,6 +782,7 @@ PYBIND11_MODULE(_native, m)
         py::arg("radius"), py::arg("estimator"));
   m.def("estimate_noise", &estimate_noise);
   m.def("input_outliers", &input_outliers);
+  m.def("nearest_rows", &nearest_rows);
   m.def("denoise", &denoise);
   py::class_<Shape_handle>(m, "Shape")
     .def(py::init<const Doubles&, const std::optional<Doubles>&>())

@@ -63,7 +63,8 @@ std::unique_ptr<Analysis> analyze(const cas3::Curvature_options& o, const cas3::
   try
   {
     const auto np = CAS3::parameters::reference_normals(std::cref(cloud.normals),
-      CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
+      CAS3::parameters::orient_each_point(o.orient_each_point,
+        CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction))));
     return o.denoising_neighbors > 0
       ? std::make_unique<Analysis>(points.begin(), points.end(),
                                    CAS3::parameters::denoising_neighbors(o.denoising_neighbors, np))
@@ -127,7 +128,7 @@ int run(const cas3::Curvature_options& o)
     else
       analysis->estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
     if(!cloud.normals.empty())
-      summary << cas3::summary_normals_line(cas3::scale_text(scale), surface, cloud.normals);
+      summary << cas3::summary_normals_line(cas3::scale_text(scale), report);
     std::ofstream ply = output.open("surface_" + cas3::scale_label(scale) + ".ply", true);
     cas3::write_surface(ply, surface, points, layers.data() + (layers.size() - o.neighborhoods.size()),
                         layers.data() + layers.size());

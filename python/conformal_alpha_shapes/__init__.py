@@ -22,6 +22,7 @@ with ``KeyboardInterrupt`` on Ctrl-C.
 import numbers
 import os
 import tempfile
+import warnings
 
 import numpy as np
 
@@ -112,7 +113,11 @@ class Layer:
             "25pct_k2"); a: the scale of its surface; description: what the
             layer is, as the program's file headers say; surface: a dict of
             what the surface extraction did (faces, vertices, parts,
-            closed_parts, points_off_surface, fraction_of_points_on_surface).
+            closed_parts, points_off_surface, fraction_of_points_on_surface;
+            with normals, normal_agreement: the share of the surface's
+            vertices whose normal points to the side their sheet faces, and
+            sheets_with_inconsistent_normals: those oriented as without
+            normals, their normals pointing to both sides alike).
     """
 
     _arrays = ("normal", "H", "K", "k1", "k2", "d1", "d2", "radius", "source", "distance")
@@ -150,6 +155,8 @@ class Result:
         spacing: the sample spacing, in units of the points ("4s" is four of them).
         noise: the estimated noise, in spacings.
         denoised: whether the points were smoothed before the shape was built.
+        merged: how many points were equal to an earlier point: merged into
+            it before any estimate, each copy has its point's values.
     """
 
     def __init__(self, points, native):
@@ -160,6 +167,14 @@ class Result:
         self.spacing = native["spacing"]
         self.noise = native["noise"]
         self.denoised = native["denoised"]
+        self.merged = native["merged"]
+        for layer in self._layers.values():
+            inconsistent = (layer.surface or {}).get("sheets_with_inconsistent_normals", 0)
+            if inconsistent:
+                warnings.warn(f"layer {layer.name}: the normals of {inconsistent} sheet(s) point about as often to "
+                              "one side as to the other (unoriented normals?); those sheets are oriented as without "
+                              "normals", stacklevel=3)
+                break
 
     def __getitem__(self, name):
         try:
@@ -277,8 +292,11 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
         points: (N, 3) array of the points (float64; other real dtypes and
             layouts are converted).
         normals: optional (N, 3) array, a normal per point (a scanner's):
-            each part of the surface is oriented by the majority of its
-            points' normals, each point by its own.
+            each sheet of the surface is oriented by the majority of its
+            points' normals where they are consistent; where they point
+            about as often to one side as to the other (unoriented normals,
+            random signs) the sheet is oriented as without normals, with a
+            warning. A point's values follow its sheet.
         scales: the conformal scales ``a``: "auto" (the smallest at which the
             surface covers the sample), a value > 0, or a quantile of the
             facet values as "25%" (the paper's figures use 10%, 25%, 35%, 50%).

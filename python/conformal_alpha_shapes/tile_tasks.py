@@ -28,13 +28,15 @@ def tile_noise(folder, tile, has_normals):
 
 
 def tile_outliers(folder, tile, has_normals):
-    """A tile's outlier flags (the input rule on the tile with its halo), and
-    its kept core points' coordinates, sorted per axis, for the global center."""
+    """A tile's outlier flags (the input rule on the tile with its halo) and
+    copies of earlier points, and its kept core points' coordinates (each
+    point once), sorted per axis, for the global center."""
     from . import _native
     index, points, _, is_core = tile_partition.load_tile(folder, tile, has_normals)
-    outlier = _native.input_outliers(points)
+    outlier, copy = _native.input_outliers(points)
     tile_io.save_array(tile_partition.tile_path(folder, tile, "outlier.npy"), outlier)
-    kept = points[is_core & ~outlier]
+    tile_io.save_array(tile_partition.tile_path(folder, tile, "copy.npy"), copy)
+    kept = points[is_core & ~outlier & ~copy]
     for axis in range(3):
         values = np.sort(kept[:, axis])
         tile_io.save_array(tile_partition.tile_path(folder, tile, f"axis{axis}.npy"), values)
@@ -42,9 +44,10 @@ def tile_outliers(folder, tile, has_normals):
 
 
 def _kept_points(folder, tile, has_normals, core_only):
-    """A tile's points that are not outliers: (index, points, is_core)."""
+    """A tile's points that are not outliers, each point once: (index, points, is_core)."""
     index, points, _, is_core = tile_partition.load_tile(folder, tile, has_normals)
     kept = ~np.load(tile_partition.tile_path(folder, tile, "outlier.npy"))
+    kept &= ~np.load(tile_partition.tile_path(folder, tile, "copy.npy"))
     if core_only:
         kept &= is_core
     return index[kept], points[kept], is_core[kept]
@@ -99,33 +102,11 @@ def tile_noise_sample(folder, tile, has_normals, center, exponent, count):
 def tile_noise_neighbors(folder, tile, has_normals, center, exponent, sample, neighbors):
     """The kept points of a tile (core and halo) among the ``neighbors`` nearest
     of each of its ``sample`` indices, ties included: (indices, normalized points)."""
+    from . import _native
     index, points, _ = _kept_points(folder, tile, has_normals, False)
     q = _normalized(points, center, exponent)
-    k = min(neighbors, len(q) - 1)
-    by_x = np.argsort(q[:, 0], kind="stable")
-    xs = q[by_x, 0]
-    extent = float((q.max(axis=0) - q.min(axis=0)).max()) if len(q) else 0.0
-    # half the side of a cube that holds about 2k points of a surface
-    start = extent * np.sqrt(2 * (k + 1) / max(len(q), 1))
-    chosen = []
-    for row in np.searchsorted(index, sample):
-        half = start
-        while True:
-            # the points of the cube of side 2 half around the sample point,
-            # from the slab of its x; enough when the k-th nearest distance
-            # (ties included) is inside it, or when it holds the whole tile
-            slab = by_x[np.searchsorted(xs, q[row, 0] - half):np.searchsorted(xs, q[row, 0] + half, side="right")]
-            inside = slab[(np.abs(q[slab, 1:] - q[row, 1:]) <= half).all(axis=1)]
-            whole = half >= extent
-            if len(inside) > k or whole:
-                distance = ((q[inside] - q[row]) ** 2).sum(axis=1)
-                limit = np.partition(distance, k)[k] * (1 + 1e-9)
-                if whole or limit <= half * half:
-                    chosen.append(inside[distance <= limit])
-                    break
-            half *= 2
-    chosen = np.unique(np.concatenate(chosen)) if chosen else np.empty(0, np.int64)
-    return index[chosen], q[chosen]
+    rows = _native.nearest_rows(q, np.searchsorted(index, sample).astype(np.int64), min(neighbors, len(q)))
+    return index[rows], q[rows]
 
 
 class _TileShape:

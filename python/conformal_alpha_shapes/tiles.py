@@ -44,8 +44,8 @@ FRONT_REACH_SPACINGS = 8.0
 COVERAGE = 0.99
 # The share of the workers' memory that the held shapes may take.
 HELD_SHAPES_SHARE = 0.5
-# estimate_noise()'s sample of the points and the neighbors of its fits
-NOISE_SAMPLE = 2000
+# estimate_noise()'s sample of the points (noise_sample_size in estimate_noise.h) and the neighbors of its fits
+NOISE_SAMPLE = 100000
 NOISE_NEIGHBORS = 24
 # What the program asks of glibc's malloc (the manual, "Performance"):
 # transparent huge pages where the kernel gives them on request, and one

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <random>
@@ -523,6 +524,184 @@ BOOST_AUTO_TEST_CASE(closing_values_give_the_automatic_scale)
   BOOST_TEST(values[k] == m.scale_value(CAS3::Scale::automatic()));
   const std::vector<double> by_vertex = CAS3::Surface_front<CAS3::Multiscale_curvatures<K>::Shape>(m.shape()).closing_values();
   BOOST_TEST(by_vertex.size() == m.shape().number_of_vertices());
+}
+
+
+// ---------------------------------------------------------------------------
+// The same surface gives the same answer (the manual, "Input Rules"): a
+// change of how the points are written down that leaves the sampled surface
+// as it is moves no value beyond rounding.
+
+#ifdef CAS3_SANITIZED
+constexpr std::size_t invariance_points = 2500;
+#else
+constexpr std::size_t invariance_points = 8000;
+#endif
+
+// A noisy torus: no symmetry of the sample that a rotation could map onto itself.
+Sample noisy_torus()
+{
+  Sample s = cas3_analytic::torus_truth_sample<Point, Vector>(invariance_points, 1, 0.35);
+  cas3_analytic::add_normal_noise(s, 0.1, 21);
+  return s;
+}
+
+// How far `changed` (of a copy of the points moved by a similarity of
+// scale `scale`, whose linear part maps the normals by `turn`) strays from
+// `base` at the first `n` points: the largest relative change of `a`, the
+// smallest share of points whose normals stay on the same side and the
+// largest median relative change of H, over the layers.
+struct Change
+{
+  double a = 0, same_side = 1, H = 0;
+};
+template <class Turn>
+Change change_between(const std::vector<CAS3::Curvature_layer<K> >& base,
+                      const std::vector<CAS3::Curvature_layer<K> >& changed, std::size_t n, double scale, Turn turn)
+{
+  Change c;
+  BOOST_REQUIRE(base.size() == changed.size());
+  for(std::size_t l = 0; l < base.size(); ++l)
+  {
+    c.a = (std::max)(c.a, std::abs(changed[l].a / base[l].a - 1));
+    std::size_t same = 0, compared = 0;
+    std::vector<double> relative;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const CAS3::Point_curvature<K>& x = base[l].points[i];
+      const CAS3::Point_curvature<K>& y = changed[l].points[i];
+      if(!std::isfinite(x.mean_curvature) || !std::isfinite(y.mean_curvature))
+        continue;
+      ++compared;
+      same += x.normal * turn(y.normal) > 0 ? 1 : 0;
+      relative.push_back(std::abs(y.mean_curvature * scale - x.mean_curvature) / std::abs(x.mean_curvature));
+    }
+    BOOST_REQUIRE(compared > n * 9 / 10);
+    c.same_side = (std::min)(c.same_side, double(same) / double(compared));
+    c.H = (std::max)(c.H, cas3_test::quantile(relative, 0.5));
+  }
+  return c;
+}
+
+BOOST_AUTO_TEST_CASE(copies_of_points_change_nothing)
+{
+  const Sample s = noisy_torus();
+  std::vector<Point> points = s.points;
+  for(std::size_t i = 0; i < points.size(); i += 20)  // 5% written twice, at the end
+    points.push_back(points[i]);
+  const auto base = CAS3::multiscale_curvatures(s.points);
+  const CAS3::Multiscale_curvatures<K> m(points.begin(), points.end());
+  BOOST_TEST(m.number_of_merged_points() == points.size() - s.points.size());
+  BOOST_TEST(m.noise().spacing == CAS3::estimate_noise(s.points).spacing);
+  BOOST_TEST(CAS3::estimate_noise(points).noise == CAS3::estimate_noise(s.points).noise);
+  const auto copied = CAS3::multiscale_curvatures(points);
+  for(std::size_t l = 0; l < base.size(); ++l)
+  {
+    BOOST_TEST(copied[l].a == base[l].a);
+    BOOST_TEST(copied[l].surface.number_of_input_points == points.size());
+    BOOST_TEST(copied[l].surface.number_of_points_off_surface
+               >= base[l].surface.number_of_points_off_surface);
+    std::size_t differ = 0;
+    for(std::size_t i = 0; i < s.points.size(); ++i)
+      differ += same_bits(copied[l].points[i], base[l].points[i]) ? 0 : 1;
+    for(std::size_t i = s.points.size(), j = 0; i < points.size(); ++i, j += 20)
+      differ += same_bits(copied[l].points[i], base[l].points[j]) ? 0 : 1;
+    BOOST_TEST(differ == 0u);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(rigid_motions_and_scalings_change_nothing_beyond_rounding)
+{
+  const Sample s = noisy_torus();
+  const auto base = CAS3::multiscale_curvatures(s.points);
+  const CAS3::Noise_estimate noise = CAS3::estimate_noise(s.points);
+  struct Case
+  {
+    std::string name;
+    double scale;
+    std::function<Point(const Point&)> move;
+    std::function<Vector(const Vector&)> turn_back;
+  };
+  const auto same = [](const Vector& v) { return v; };
+  const std::vector<Case> cases = {
+    {"translated by 1e-7 of the diagonal", 1, [](const Point& p) { return p + Vector(3e-7, 2e-7, 1e-7); }, same},
+    {"turned by 90 degrees about z", 1, [](const Point& p) { return Point(-p.y(), p.x(), p.z()); },
+     [](const Vector& v) { return Vector(v.y(), -v.x(), v.z()); }},
+    {"times 4", 4, [](const Point& p) { return Point(4 * p.x(), 4 * p.y(), 4 * p.z()); }, same},
+    {"times 3", 3, [](const Point& p) { return Point(3 * p.x(), 3 * p.y(), 3 * p.z()); }, same}};
+  for(const Case& c : cases)
+  {
+    BOOST_TEST_CONTEXT(c.name)
+    {
+      std::vector<Point> moved;
+      for(const Point& p : s.points)
+        moved.push_back(c.move(p));
+      const CAS3::Noise_estimate moved_noise = CAS3::estimate_noise(moved);
+      BOOST_TEST(std::abs(moved_noise.spacing / (c.scale * noise.spacing) - 1) < 0.005);
+      BOOST_TEST(std::abs(moved_noise.noise / noise.noise - 1) < 0.005);
+      const Change change = change_between(base, CAS3::multiscale_curvatures(moved), s.points.size(), c.scale,
+                                           c.turn_back);
+      BOOST_TEST(change.a < 0.002);
+      BOOST_TEST(change.same_side >= 0.999);
+      BOOST_TEST(change.H <= 0.001);
+    }
+  }
+}
+
+// Input normals are hints: where they point about as often to one side as
+// to the other (random signs, an unoriented estimate) the sheets are
+// oriented as without them, with a count in the report; consistent ones,
+// flipped or not, are followed.
+BOOST_AUTO_TEST_CASE(normals_of_random_signs_orient_as_no_normals)
+{
+  for(const bool open : {false, true})
+  {
+    BOOST_TEST_CONTEXT((open ? "open cap" : "closed ellipsoid"))
+    {
+      Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(invariance_points, 1, 0.7, 0.4,
+                                                                      open ? 0.1 : -1e300);
+      cas3_analytic::add_normal_noise(s, 0.1, 22);
+      std::mt19937 random(5);
+      std::vector<Vector> random_signs, flipped;
+      for(const Vector& n : s.normals)
+      {
+        random_signs.push_back(random() % 2 ? n : -n);
+        flipped.push_back(-n);
+      }
+      const auto none = CAS3::multiscale_curvatures(s.points);
+      const auto with_random = CAS3::multiscale_curvatures(s.points, CAS3::parameters::reference_normals(random_signs));
+      const auto with_flipped = CAS3::multiscale_curvatures(s.points, CAS3::parameters::reference_normals(flipped));
+      const auto same = [](const Vector& v) { return v; };
+      const auto opposite = [](const Vector& v) { return -v; };
+      BOOST_TEST(with_random.front().surface.number_of_sheets_with_inconsistent_normals > 0u);
+      BOOST_TEST(with_random.front().surface.reference_normal_agreement < 0.6);
+      BOOST_TEST(change_between(none, with_random, s.points.size(), 1, same).same_side >= 0.995);
+      BOOST_TEST(with_flipped.front().surface.number_of_sheets_with_inconsistent_normals == 0u);
+      BOOST_TEST(with_flipped.front().surface.reference_normal_agreement > 0.99);
+      // the flipped normals' values against the true normals' side
+      const Change change = change_between(none, with_flipped, s.points.size(), -1, opposite);
+      BOOST_TEST(change.same_side >= 0.999);
+      BOOST_TEST(change.H <= 0.001);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_automatic_layer_is_the_same_whatever_radii_beside_it)
+{
+  const Sample s = noisy_torus();
+  const std::vector<CAS3::Neighborhood> alone = {CAS3::Neighborhood::automatic()};
+  const std::vector<CAS3::Neighborhood> beside = {
+    CAS3::Neighborhood::automatic(), CAS3::Neighborhood::spacings(2), CAS3::Neighborhood::spacings(3),
+    CAS3::Neighborhood::spacings(4), CAS3::Neighborhood::spacings(8), CAS3::Neighborhood::spacings(16),
+    CAS3::Neighborhood::spacings(22), CAS3::Neighborhood::spacings(32)};
+  const auto a = CAS3::multiscale_curvatures(s.points, CAS3::parameters::neighborhoods(alone));
+  const auto b = CAS3::multiscale_curvatures(s.points, CAS3::parameters::neighborhoods(beside));
+  const auto c = CAS3::multiscale_curvatures(s.points);  // the default radii
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < s.points.size(); ++i)
+    differ += (same_bits(a.front().points[i], b.front().points[i]) ? 0 : 1)
+              + (same_bits(a.front().points[i], c.front().points[i]) ? 0 : 1);
+  BOOST_TEST(differ == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -239,6 +239,52 @@ BOOST_AUTO_TEST_CASE(a_vertex_without_a_value_takes_its_neighbors_mean)
 }
 
 
+// A point off the surface takes the values interpolated at its nearest
+// surface point, not those of one corner of the facet there: made-up values,
+// distinct at every vertex, on a sphere whose cap is cut off; the points of
+// the cap take values that no vertex has, but where their nearest surface
+// point is a corner.
+BOOST_AUTO_TEST_CASE(points_off_the_surface_interpolate_over_their_facet)
+{
+  typedef Surface_mesh::Vertex_index Vertex;
+  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(3000, 1, 1, 1);
+  const Cas cas(pts.begin(), pts.end());
+  Surface_mesh mesh;
+  auto input_index = mesh.add_property_map<Vertex, std::size_t>("v:input_index").first;
+  CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
+  cas3_test::remove_cap_above(mesh, 0.8);
+  std::vector<CAS3::Vertex_curvature<K> > values(mesh.number_of_vertices());
+  std::vector<double> vertex_values;
+  for(Vertex v : mesh.vertices())
+  {
+    const Vector radial = mesh.point(v) - CGAL::ORIGIN;
+    const Vector n = radial / std::sqrt(radial.squared_length());
+    const Vector d1 = CGAL::cross_product(n, Vector(0.3, 0.4, 0.5));
+    const double k = 1 + double(std::size_t(v)) / 1000;
+    CAS3::Vertex_curvature<K>& c = values[std::size_t(v)];
+    c.normal = n;
+    c.principal = CAS3::Principal_curvatures_and_directions<K>{k, k, d1 / std::sqrt(d1.squared_length()),
+                                                               CGAL::cross_product(n, d1) / std::sqrt(d1.squared_length())};
+    c.radius = 0.1;
+    vertex_values.push_back(c.mean_curvature());
+  }
+  std::sort(vertex_values.begin(), vertex_values.end());
+  std::vector<std::vector<CAS3::Vertex_curvature<K> > > layers(1, values);
+  std::vector<CAS3::Point_curvature<K> > out(pts.size());
+  CAS3::transfer_to_points(cas, mesh, layers, [&](std::size_t) { return CGAL::make_property_map(out); },
+                           CAS3::parameters::vertex_input_index_map(input_index));
+  std::size_t nearest = 0, a_corner_value = 0;
+  for(const CAS3::Point_curvature<K>& c : out)
+    if(c.source == CAS3::NEAREST_SURFACE_POINT)
+    {
+      ++nearest;
+      a_corner_value += std::binary_search(vertex_values.begin(), vertex_values.end(), c.mean_curvature) ? 1 : 0;
+    }
+  BOOST_TEST_MESSAGE(nearest << " points off the surface, " << a_corner_value << " with a corner's value");
+  BOOST_TEST(nearest > 50u);
+  BOOST_TEST(a_corner_value * 2 < nearest);
+}
+
 // The nearest surface points found with a search tree over the faces near
 // the points (internal::surface_feet() with a reach, widened where the
 // nearest face is farther) are those of the tree over the whole surface:

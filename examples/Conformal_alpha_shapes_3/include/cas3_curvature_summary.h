@@ -71,6 +71,9 @@ std::string summary_head(const std::string& input, const CGAL::Conformal_alpha_s
 {
   namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
   std::string head = input + ": " + std::to_string(analysis.number_of_input_points()) + " points";
+  if(analysis.number_of_merged_points() > 0)
+    head += ", " + std::to_string(analysis.number_of_merged_points())
+            + " written more than once (merged, each copy given its point's values)";
   if(!analysis.outliers().empty())
     head += ", " + std::to_string(analysis.outliers().size()) + " isolated far outliers left out (outlier column)";
   const CAS3::Noise_estimate noise = analysis.noise();
@@ -85,7 +88,7 @@ std::string summary_head(const std::string& input, const CGAL::Conformal_alpha_s
   head += "surface: " + std::string(analysis.extraction() == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
           + "; orientation: "
           + (analysis.has_reference_normals()
-               ? "the majority of the input normals, per sheet; values per point"
+               ? "the majority of the input normals, per sheet where they are consistent; values follow the sheets"
                : "closed sheets outward, open sheets away from the center, with those they continue across gaps")
           + "\n";
   return head + "layer               a  own vertex  nearest  no value  radius(median)"
@@ -101,29 +104,21 @@ inline std::string summary_scale_line(const std::string& scale, const CGAL::Conf
          + " open), " + std::to_string(report.number_of_points_off_surface) + " points off the surface\n";
 }
 
-// How far the oriented sheets of `surface` (after estimate_curvatures(),
-// which sets its normals) follow the input normals `normals`, before each
-// point's values are turned to its own normal's side: a line for the scale
-// `scale`.
-template <class Surface, class Vector>
-std::string summary_normals_line(const std::string& scale, const Surface& surface, const std::vector<Vector>& normals)
+// How far the oriented sheets of a surface follow the input normals, and
+// whether some sheets' normals were not consistent: a line for the scale
+// `scale` of the surface's `report`.
+inline std::string summary_normals_line(const std::string& scale, const CGAL::Conformal_alpha_shapes_3::Surface_report& report)
 {
-  typedef typename Surface::Vertex_index Vertex;
-  const auto index = surface.template property_map<Vertex, std::size_t>("v:input_index").first;
-  const auto normal = surface.template property_map<Vertex, Vector>("v:normal").first;
-  std::size_t agree = 0, compared = 0;
-  for(Vertex v : surface.vertices())
-    if(normal[v] != Vector(CGAL::NULL_VECTOR) && std::isfinite(normal[v].x()))
-    {
-      ++compared;
-      agree += normal[v] * normals[index[v]] > 0 ? 1 : 0;
-    }
-  char line[160];
-  std::snprintf(line, sizeof line,
-                "scale %s: the sheets agree with the input normals at %.1f%% of their vertices; "
-                "each point's values are on its own normal's side\n",
-                scale.c_str(), compared == 0 ? 0.0 : 100.0 * double(agree) / double(compared));
-  return line;
+  char line[320];
+  std::snprintf(line, sizeof line, "scale %s: the sheets agree with the input normals at %.1f%% of their vertices\n",
+                scale.c_str(), 100.0 * report.reference_normal_agreement);
+  std::string text = line;
+  if(report.number_of_sheets_with_inconsistent_normals > 0)
+    text += "warning: the input normals of " + std::to_string(report.number_of_sheets_with_inconsistent_normals)
+            + " sheet(s) at scale " + scale
+            + " point about as often to one side as to the other (unoriented normals?): those sheets are oriented "
+              "as without normals\n";
+  return text;
 }
 
 } // namespace cas3
