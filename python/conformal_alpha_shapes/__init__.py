@@ -293,10 +293,11 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
             layouts are converted).
         normals: optional (N, 3) array, a normal per point (a scanner's):
             each sheet of the surface is oriented by the majority of its
-            points' normals where they are consistent; where they point
+            points' normals where they are consistent, and each of its
+            points' values by the point's own normal; where they point
             about as often to one side as to the other (unoriented normals,
-            random signs) the sheet is oriented as without normals, with a
-            warning. A point's values follow its sheet.
+            random signs) the sheet is oriented as without normals, its
+            points' values follow it, and a warning says so.
         scales: the conformal scales ``a``: "auto" (the smallest at which the
             surface covers the sample), a value > 0, or a quantile of the
             facet values as "25%" (the paper's figures use 10%, 25%, 35%, 50%).

@@ -203,3 +203,24 @@ def test_help_shows_docstrings():
                      cas.Result.to_structured, cas.read_point_cloud):
         assert function.__doc__ and len(function.__doc__) > 60, function
     assert "Parameters" in cas.multiscale_curvatures.__doc__ and "Raises" in cas.multiscale_curvatures.__doc__
+
+
+def test_copies_are_merged_and_unoriented_normals_warn():
+    """Points written twice are merged (each copy gets its point's values);
+    normals of random signs orient as no normals, with a warning."""
+    points, normals, _ = ellipsoid(6000, (1.5, 1.0, 0.75), noise=0.002)
+    plain = cas.multiscale_curvatures(points, radii=("auto", "4s"))
+    assert plain.merged == 0
+    copied = cas.multiscale_curvatures(np.vstack([points, points[::10]]), radii=("auto", "4s"))
+    assert copied.merged == 600
+    for name in plain.layers:
+        assert np.array_equal(copied[name].H[:6000], plain[name].H, equal_nan=True)
+        assert np.array_equal(copied[name].H[6000:], plain[name].H[::10], equal_nan=True)
+    signs = np.random.default_rng(4).choice([-1.0, 1.0], size=(6000, 1))
+    with pytest.warns(UserWarning, match="oriented as without normals"):
+        unoriented = cas.multiscale_curvatures(points, normals * signs, radii=("auto", "4s"))
+    for name in plain.layers:
+        same = np.einsum("ij,ij->i", unoriented[name].normal, plain[name].normal) > 0
+        assert same.mean() >= 0.995, name
+        assert unoriented[name].surface["sheets_with_inconsistent_normals"] >= 1
+        assert unoriented[name].surface["normal_agreement"] < 0.6

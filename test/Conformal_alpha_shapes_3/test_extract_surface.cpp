@@ -417,7 +417,8 @@ BOOST_AUTO_TEST_CASE(real_scans_with_and_without_their_normals)
     for(bool given : {true, false})
     {
       const Analysis analysis(points.begin(), points.end(),
-                              CAS3::parameters::reference_normals(given ? normals : std::vector<Vector>()));
+                              CAS3::parameters::reference_normals(given ? normals : std::vector<Vector>(),
+                                                                  CAS3::parameters::orient_each_point(true)));
       Analysis::Surface surface;
       const CAS3::Surface_report report = analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
       const auto values = analysis.estimate_curvatures(surface, {CAS3::Neighborhood::spacings(4)}).front();
@@ -445,8 +446,9 @@ BOOST_AUTO_TEST_CASE(real_scans_with_and_without_their_normals)
         BOOST_TEST(double(covered) >= 0.99 * double(points.size()));
         if(given)
         {
-          BOOST_TEST(agree == covered);
+          BOOST_TEST(agree == covered);  // each point on its own normal's side
           BOOST_TEST(sheets_share >= k.sheets_given - 0.005);
+          BOOST_TEST(std::abs(report.reference_normal_agreement - sheets_share) < 0.01);
         }
         else
           BOOST_TEST(points_share >= k.points_xyz - 0.005);

@@ -24,7 +24,7 @@ inline const char* curvature_usage()
 {
   return "usage: conformal_curvature [INPUT] [--alpha LIST] [--radius LIST] [--rings LIST]\n"
          "                           [--estimator NAME] [--denoise MODE] [--denoise-neighbors K]\n"
-         "                           [--extraction NAME] [--orient-each-point] [--output DIR] [--csv]\n"
+         "                           [--extraction NAME] [--values-follow-sheets] [--output DIR] [--csv]\n"
          "                           [--quiet] [--help]\n"
          "\n"
          "Multi-scale curvature of a point cloud on its conformal alpha shape.\n"
@@ -46,9 +46,9 @@ inline const char* curvature_usage()
          "                   the estimated noise (24 to 64)\n"
          "  --extraction NAME front (default: one sheet per part, open or closed)\n"
          "                   or solid (the boundary of the enclosed solid)\n"
-         "  --orient-each-point  with input normals, each point's values on its own\n"
-         "                   normal's side (default: they follow the point's sheet,\n"
-         "                   oriented by the majority of its consistent normals)\n"
+         "  --values-follow-sheets  with input normals, every point's values on its\n"
+         "                   sheet's side (default: on its own normal's side where\n"
+         "                   its sheet's normals are consistent)\n"
          "  --output DIR     default ./conformal_curvature_out\n"
          "  --csv            also write DIR/curvatures.csv, a row per point per layer\n"
          "  --quiet          no progress and no summary\n"
@@ -84,7 +84,7 @@ struct Curvature_options
   unsigned int denoising_neighbors = 0;  // 0: as the library's plan says
   CGAL::Conformal_alpha_shapes_3::Surface_extraction extraction = CGAL::Conformal_alpha_shapes_3::ADVANCING_FRONT;
   std::string output = "conformal_curvature_out";
-  bool orient_each_point = false;
+  bool orient_each_point = true;
   bool csv = false;
   bool quiet = false;
   bool help = false;
@@ -230,8 +230,8 @@ inline Curvature_options parse_curvature_options(int argc, char* argv[])
       o.quiet = true;
     else if(arg == "--csv")
       o.csv = true;
-    else if(arg == "--orient-each-point")
-      o.orient_each_point = true;
+    else if(arg == "--values-follow-sheets")
+      o.orient_each_point = false;
     else if(arg == "--alpha")
       o.scales = parse_scales(arg, split_list(value()));
     else if(arg == "--rings" || arg == "--radius")

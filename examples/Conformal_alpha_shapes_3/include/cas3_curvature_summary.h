@@ -88,7 +88,7 @@ std::string summary_head(const std::string& input, const CGAL::Conformal_alpha_s
   head += "surface: " + std::string(analysis.extraction() == CAS3::ADVANCING_FRONT ? "advancing front" : "solid boundary")
           + "; orientation: "
           + (analysis.has_reference_normals()
-               ? "the majority of the input normals, per sheet where they are consistent; values follow the sheets"
+               ? "the majority of the input normals, per sheet where they are consistent; values per point there"
                : "closed sheets outward, open sheets away from the center, with those they continue across gaps")
           + "\n";
   return head + "layer               a  own vertex  nearest  no value  radius(median)"

@@ -126,14 +126,14 @@ public:
 
   \cgalNamedParamsBegin
     \cgalParamNBegin{reference_normals}
-      \cgalParamDescription{a normal per input point (a scanner's), or an empty vector: each sheet of a surface on which they are consistent is oriented by the majority of its points' normals, the others as without normals (`extract_surface()`); a point's values follow its sheet}
+      \cgalParamDescription{a normal per input point (a scanner's), or an empty vector: each sheet of a surface on which they are consistent is oriented by the majority of its points' normals, and each of its points' values by the point's own normal (see `transfer_to_points()`); a sheet on which they are not (random signs) is oriented as without normals, and its points' values follow it}
       \cgalParamType{`std::vector<Vector>`}
       \cgalParamDefault{empty}
     \cgalParamNEnd
     \cgalParamNBegin{orient_each_point}
-      \cgalParamDescription{with `reference_normals`, whether each point's values are turned to its own normal's side (see `transfer_to_points()`) rather than following its sheet}
+      \cgalParamDescription{with `reference_normals`, whether the values of the points of sheets with consistent normals are turned to each point's own normal's side; `false`: every point's values follow its sheet}
       \cgalParamType{`bool`}
-      \cgalParamDefault{`false`}
+      \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{noise_estimate}
       \cgalParamDescription{the spacing (in input units) and noise (in spacings) of a larger cloud these points are part of, such as the `noise()` of a run on the whole cloud when each tile is run alone: used instead of an estimate on these points, so that `noise()`, radii in spacings, the automatic radius, the noise level of the curvature fits and the denoising decision are those of the larger run}
@@ -177,7 +177,7 @@ public:
     m_extraction = choose_parameter(get_parameter(np, internal_np_cas3::surface_extraction), ADVANCING_FRONT);
     m_reference_normals = choose_parameter(get_parameter(np, internal_np_cas3::reference_normals),
                                            std::vector<Vector>());
-    m_orient_each_point = choose_parameter(get_parameter(np, internal_np_cas3::orient_each_point), false);
+    m_orient_each_point = choose_parameter(get_parameter(np, internal_np_cas3::orient_each_point), true);
     m_input = internal::normalize_input<Kernel>(std::vector<Point>(first, last));
     if(!m_reference_normals.empty() && m_reference_normals.size() != m_input.is_outlier.size())
       throw std::invalid_argument("Multiscale_curvatures: " + std::to_string(m_reference_normals.size())
@@ -206,6 +206,11 @@ public:
                                  choose_parameter(get_parameter(np, internal_np_cas3::denoising_neighbors), 0u));
     if(m_denoising.passes > 0)
       denoise(points, m_denoising);
+    if(points.size() < 4)  // the shape's own message would count the points without their copies
+      throw std::invalid_argument("Multiscale_curvatures: the " + std::to_string(points.size() + m_input.copies.size())
+                                  + " input points (" + std::to_string(points.size())
+                                  + " distinct) span dimension " + std::to_string(int(points.size()) - 1)
+                                  + " at most; a conformal alpha shape needs 4 points that are not coplanar");
     m_shape.make_conformal_alpha_shape(points.begin(), points.end(), parameters::local_feature_size_estimator(
       choose_parameter(get_parameter(np, internal_np_cas3::local_feature_size_estimator), NOISE_ROBUST_POLE_DISTANCE)));
   }
@@ -478,9 +483,66 @@ private:
         layer.resize(number_of_input_points());
         return internal::Input_units_writer<Kernel>{&m_input, &layer};
       },
-      m_orient_each_point ? m_reference_normals : std::vector<Vector>());
+      m_orient_each_point ? normals_to_follow(surface) : std::vector<Vector>());
     if(!values.empty())
       hand_over(values.size() - 1);
+  }
+
+  // By kept point, the reference normal its values follow: its own where
+  // the reference normals of its sheet (a connected part of `surface`)
+  // are consistent, as extract_surface() decides it (at least 3/4 of its
+  // vertices agree with the sheet), else none (a null vector); a point off
+  // the surface follows its own when most of the surface's vertices do.
+  std::vector<Vector> normals_to_follow(const Surface& surface) const
+  {
+    if(m_reference_normals.empty())
+      return {};
+    const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
+    std::vector<std::size_t> root(surface.num_vertices());
+    for(std::size_t v = 0; v < root.size(); ++v)
+      root[v] = v;
+    auto find = [&](std::size_t v) {
+      while(root[v] != v)
+        v = root[v] = root[root[v]];
+      return v;
+    };
+    std::vector<Vector> oriented(surface.num_vertices(), Vector(CGAL::NULL_VECTOR));
+    for(typename Surface::Face_index f : surface.faces())
+    {
+      const typename Surface::Halfedge_index h = surface.halfedge(f);
+      const Surface_vertex a = surface.source(h), b = surface.target(h), c = surface.target(surface.next(h));
+      const Vector area_normal = CGAL::cross_product(surface.point(b) - surface.point(a),
+                                                     surface.point(c) - surface.point(a));
+      for(Surface_vertex v : {a, b, c})
+        oriented[v.idx()] = oriented[v.idx()] + area_normal;
+      root[find(a.idx())] = find(b.idx());
+      root[find(b.idx())] = find(c.idx());
+    }
+    std::vector<std::size_t> agree(root.size(), 0), count(root.size(), 0);
+    for(Surface_vertex v : surface.vertices())
+    {
+      const std::size_t r = find(v.idx());
+      agree[r] += oriented[v.idx()] * m_reference_normals[m_kept_index[input_index[v]]] > 0 ? 1 : 0;
+      ++count[r];
+    }
+    std::vector<Vector> follow(m_reference_normals.size(), Vector(CGAL::NULL_VECTOR));
+    std::size_t following = 0;
+    std::vector<bool> on_surface(m_reference_normals.size(), false);
+    for(Surface_vertex v : surface.vertices())
+    {
+      const std::size_t r = find(v.idx()), k = m_kept_index[input_index[v]];
+      on_surface[k] = true;
+      if(double(agree[r]) >= internal::consistent_share * double(count[r]))
+      {
+        follow[k] = m_reference_normals[k];
+        ++following;
+      }
+    }
+    if(2 * following > surface.number_of_vertices())
+      for(std::size_t k = 0; k < follow.size(); ++k)
+        if(!on_surface[k])
+          follow[k] = m_reference_normals[k];
+    return follow;
   }
 
   // The front grown with no bound, once.
@@ -523,7 +585,7 @@ private:
   Shape m_shape;
   Surface_extraction m_extraction = ADVANCING_FRONT;
   std::vector<Vector> m_reference_normals;
-  bool m_orient_each_point = false;
+  bool m_orient_each_point = true;
   Noise_estimate m_noise;
   Denoising_plan m_denoising;
   mutable double m_suggested = -1;
