@@ -329,6 +329,29 @@ inline std::vector<Las_extra_field> las_extra_fields(const std::vector<std::stri
   return fields;
 }
 
+// The point records of a LAS 1.4 file of `header` (las_header_bytes()):
+// per point i, `record(i)` (a Las_record) in point format 6 or 7, its
+// outlier flag and the values of the layers, as las_extra_fields() names
+// them.
+template <class Record>
+void write_las_point_records(std::ostream& out, std::size_t n, const Las_output_header& header, Record record,
+                             const std::vector<bool>& outlier, const std::vector<Layer>& layers)
+{
+  const std::size_t base = header.rgb ? 36 : 30;
+  const std::size_t row_size = std::size_t(las_output_record_length(header));
+  output_detail::write_rows(out, n, row_size, [&](std::size_t i, output_detail::Row_cursor& row) {
+    char bytes[36];
+    encode_las_record(record(i), header.rgb, bytes);
+    row.put_bytes(bytes, base);
+    row.put(std::uint8_t(outlier[i] ? 1 : 0));
+    for(const Layer& layer : layers)
+    {
+      row.put_values(layer, i);
+      row.put(layer.source[i]);
+    }
+  });
+}
+
 // The point cloud as LAS 1.4: point format 6, or 7 when the LAS input had
 // colors; the input's records (scaled integers, scale and offset, fields)
 // when `las` holds one per point, else the points written with
@@ -344,7 +367,6 @@ void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, 
     labels.push_back(layer.label);
   header.extra = las_extra_fields(labels);
   const bool from_las = las.present && las.records.size() == points.size();
-  Las_bounds bounds;
   auto record = [&](std::size_t i) {
     if(from_las)
       return las.records[i];
@@ -378,23 +400,12 @@ void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, 
       }
     choose_las_scale(low, high, header);
   }
+  Las_bounds bounds;
   for(std::size_t i = 0; i < points.size(); ++i)
     bounds.add(record(i));
   bounds.set(header);
   out << las_header_bytes(header);
-  const std::size_t base = header.rgb ? 36 : 30;
-  const std::size_t row_size = std::size_t(las_output_record_length(header));
-  output_detail::write_rows(out, points.size(), row_size, [&](std::size_t i, output_detail::Row_cursor& row) {
-    char bytes[36];
-    encode_las_record(record(i), header.rgb, bytes);
-    row.put_bytes(bytes, base);
-    row.put(std::uint8_t(outlier[i] ? 1 : 0));
-    for(const Layer& layer : layers)
-    {
-      row.put_values(layer, i);
-      row.put(layer.source[i]);
-    }
-  });
+  write_las_point_records(out, points.size(), header, record, outlier, layers);
 }
 
 // The CSV: its header line, then append_csv_rows() for each layer.
