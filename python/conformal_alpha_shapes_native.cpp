@@ -496,12 +496,6 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
 
 // ---- LAS: the records' fields as numpy arrays, and back
 
-template <class T>
-py::array_t<T> new_array(std::size_t n)
-{
-  return py::array_t<T>(py::ssize_t(n));
-}
-
 // The fields of `records` as a dict of (N,) arrays.
 py::dict las_fields_dict(const std::vector<cas3::Las_record>& records)
 {
