@@ -3,6 +3,7 @@ the answer of one run; the scheduler-and-workers path; seams; faults; bad
 input; atomic writes. Small clouds, so that the file runs in about 100 s on
 two cores; a service that cannot start fails the test."""
 import os
+import re
 import signal
 import socket
 import subprocess
@@ -387,6 +388,28 @@ def test_bad_input_fails_before_any_file_is_written(tmp_path):
     run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / "missing.npy"),
                           "--output", str(tmp_path / "out")], capture_output=True, text=True)
     assert run.returncode == 1 and "missing.npy: no such file" in run.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_bad_las_input_and_filters_fail_before_any_file_is_written(tmp_path):
+    import las_spec
+    good = tmp_path / "good.las"
+    las_spec.write_las(good, 4, 6, las_spec.sample_fields(10, 6))
+    data = good.read_bytes()
+    (tmp_path / "scan.laz").write_bytes(data)
+    (tmp_path / "short.las").write_bytes(data[:-1])
+    cases = [(["scan.laz"], r"scan.laz: compressed LAS \(LAZ\) cannot be read without LASzip; decompress it"),
+             (["short.las"], "short.las: the header announces 10 points of 30 bytes, the file holds 9"),
+             (["good.las", "--classes", "2,x"], "--classes: not a LAS class from 0 to 255: 'x'"),
+             (["good.las", "--classes", "256"], "--classes: not a LAS class from 0 to 255: '256'"),
+             (["good.las", "--returns", "second"], "--returns: unknown returns 'second'")]
+    for args, message in cases:
+        run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / args[0]),
+                              "--output", str(tmp_path / "out"), *args[1:]], capture_output=True, text=True)
+        assert run.returncode == 1 and re.search(message, run.stderr), (args, run.stderr)
+    np.save(tmp_path / "points.npy", np.zeros((10, 3)))
+    with pytest.raises(tile_io.InputError, match="points.npy: classes, drop_withheld and returns filter LAS input"):
+        tiles.process_tiles(tmp_path / "points.npy", tmp_path / "out", workers=1, classes=[2])
     assert not (tmp_path / "out").exists()
 
 
