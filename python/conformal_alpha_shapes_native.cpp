@@ -23,12 +23,16 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <limits>
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -421,17 +425,10 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
   return job.result(o.scales, checkpoint);
 }
 
-// Writes the program's curvatures.ply from the arrays of a result: the same
-// bytes, since the values are turned into floats as the program does.
-void write_point_cloud(const std::string& path, const Doubles& points_array, const py::array_t<bool>& outlier,
-                       const py::list& layers)
+// The layers of a result (a list of the dicts of its Layer objects) as the
+// program holds them: floats, in the order of cas3::Layer::value_names().
+std::vector<cas3::Layer> layers_from_python(const py::list& layers, std::size_t n, const std::string& what)
 {
-  const std::vector<Point> points = to_triples<Point>(points_array, "points");
-  if(std::size_t(outlier.size()) != points.size())
-    throw py::value_error("write_ply: one outlier flag per point");
-  std::vector<bool> is_outlier(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    is_outlier[i] = outlier.at(py::ssize_t(i));
   std::vector<cas3::Layer> out;
   for(py::handle h : layers)
   {
@@ -439,7 +436,6 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     cas3::Layer layer;
     layer.label = d["name"].cast<std::string>();
     layer.description = d["description"].cast<std::string>();
-    const std::size_t n = points.size();
     layer.values.resize(n * cas3::Layer::number_of_values);
     layer.source.resize(n);
     // the columns in the file's order (cas3::Layer::value_names())
@@ -451,7 +447,7 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     {
       const Doubles a = d[triples[t]].cast<Doubles>();
       if(check_rows(a, triples[t]) != n)
-        throw py::value_error(std::string("write_ply: ") + triples[t] + " has not one row per point");
+        throw py::value_error(what + ": " + triples[t] + " has not one row per point");
       for(std::size_t i = 0; i < n; ++i)
         for(int j = 0; j < 3; ++j)
           layer.values[i * cas3::Layer::number_of_values + std::size_t(triple_column[t] + j)] =
@@ -461,17 +457,38 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     {
       const Doubles a = d[scalars[s]].cast<Doubles>();
       if(std::size_t(a.size()) != n)
-        throw py::value_error(std::string("write_ply: ") + scalars[s] + " has not one value per point");
+        throw py::value_error(what + ": " + scalars[s] + " has not one value per point");
       for(std::size_t i = 0; i < n; ++i)
         layer.values[i * cas3::Layer::number_of_values + std::size_t(scalar_column[s])] = float(a.data()[i]);
     }
     const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> source =
       d["source"].cast<py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> >();
     if(std::size_t(source.size()) != n)
-      throw py::value_error("write_ply: source has not one value per point");
+      throw py::value_error(what + ": source has not one value per point");
     std::copy(source.data(), source.data() + n, layer.source.begin());
     out.push_back(std::move(layer));
   }
+  return out;
+}
+
+std::vector<bool> outlier_flags(const py::array_t<bool>& outlier, std::size_t n, const std::string& what)
+{
+  if(std::size_t(outlier.size()) != n)
+    throw py::value_error(what + ": one outlier flag per point");
+  std::vector<bool> is_outlier(n);
+  for(std::size_t i = 0; i < n; ++i)
+    is_outlier[i] = outlier.at(py::ssize_t(i));
+  return is_outlier;
+}
+
+// Writes the program's curvatures.ply from the arrays of a result: the same
+// bytes, since the values are turned into floats as the program does.
+void write_point_cloud(const std::string& path, const Doubles& points_array, const py::array_t<bool>& outlier,
+                       const py::list& layers)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  const std::vector<bool> is_outlier = outlier_flags(outlier, points.size(), "write_ply");
+  const std::vector<cas3::Layer> out = layers_from_python(layers, points.size(), "write_ply");
   py::gil_scoped_release release;
   std::ofstream file(path, std::ios::binary);
   if(!file)
@@ -482,24 +499,376 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     throw std::runtime_error("write_ply: cannot write " + path);
 }
 
-// The program's reader: .xyz, .pwn, .ply, .off, .obj.
-py::tuple read_point_cloud(const std::string& path)
+// ---- LAS: the records' fields as numpy arrays, and back
+
+// The fields of `records` as a dict of (N,) arrays.
+py::dict las_fields_dict(const std::vector<cas3::Las_record>& records)
 {
+  const std::size_t n = records.size();
+  auto X = new_array<std::int32_t>(n), Y = new_array<std::int32_t>(n), Z = new_array<std::int32_t>(n);
+  auto intensity = new_array<std::uint16_t>(n), point_source_id = new_array<std::uint16_t>(n);
+  auto return_number = new_array<std::uint8_t>(n), number_of_returns = new_array<std::uint8_t>(n);
+  auto classification = new_array<std::uint8_t>(n), user_data = new_array<std::uint8_t>(n);
+  auto scanner_channel = new_array<std::uint8_t>(n), scan_direction = new_array<std::uint8_t>(n);
+  auto edge = new_array<std::uint8_t>(n);
+  auto synthetic = new_array<bool>(n), key_point = new_array<bool>(n), withheld = new_array<bool>(n),
+       overlap = new_array<bool>(n);
+  auto scan_angle = new_array<std::int16_t>(n);
+  auto gps_time = new_array<double>(n);
+  auto red = new_array<std::uint16_t>(n), green = new_array<std::uint16_t>(n), blue = new_array<std::uint16_t>(n),
+       nir = new_array<std::uint16_t>(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const cas3::Las_record& r = records[i];
+    const py::ssize_t k = py::ssize_t(i);
+    X.mutable_at(k) = r.X;
+    Y.mutable_at(k) = r.Y;
+    Z.mutable_at(k) = r.Z;
+    intensity.mutable_at(k) = r.intensity;
+    return_number.mutable_at(k) = r.return_number;
+    number_of_returns.mutable_at(k) = r.number_of_returns;
+    classification.mutable_at(k) = r.classification;
+    synthetic.mutable_at(k) = (r.flags & cas3::Las_record::SYNTHETIC) != 0;
+    key_point.mutable_at(k) = (r.flags & cas3::Las_record::KEY_POINT) != 0;
+    withheld.mutable_at(k) = (r.flags & cas3::Las_record::WITHHELD) != 0;
+    overlap.mutable_at(k) = (r.flags & cas3::Las_record::OVERLAP) != 0;
+    scanner_channel.mutable_at(k) = r.scanner_channel;
+    scan_direction.mutable_at(k) = r.scan_direction;
+    edge.mutable_at(k) = r.edge_of_flight_line;
+    user_data.mutable_at(k) = r.user_data;
+    scan_angle.mutable_at(k) = r.scan_angle;
+    point_source_id.mutable_at(k) = r.point_source_id;
+    gps_time.mutable_at(k) = r.gps_time;
+    red.mutable_at(k) = r.red;
+    green.mutable_at(k) = r.green;
+    blue.mutable_at(k) = r.blue;
+    nir.mutable_at(k) = r.nir;
+  }
+  py::dict d;
+  d["X"] = X; d["Y"] = Y; d["Z"] = Z;
+  d["intensity"] = intensity;
+  d["return_number"] = return_number;
+  d["number_of_returns"] = number_of_returns;
+  d["classification"] = classification;
+  d["synthetic"] = synthetic;
+  d["key_point"] = key_point;
+  d["withheld"] = withheld;
+  d["overlap"] = overlap;
+  d["scanner_channel"] = scanner_channel;
+  d["scan_direction"] = scan_direction;
+  d["edge_of_flight_line"] = edge;
+  d["user_data"] = user_data;
+  d["scan_angle"] = scan_angle;
+  d["point_source_id"] = point_source_id;
+  d["gps_time"] = gps_time;
+  d["red"] = red; d["green"] = green; d["blue"] = blue; d["nir"] = nir;
+  return d;
+}
+
+template <class T>
+py::array_t<T, py::array::c_style | py::array::forcecast> field(const py::dict& fields, const char* name,
+                                                                std::size_t n)
+{
+  if(!fields.contains(name))
+    throw py::value_error(std::string("write_las: the LAS fields have no '") + name + "'");
+  auto a = fields[name].cast<py::array_t<T, py::array::c_style | py::array::forcecast> >();
+  if(a.ndim() != 1 || std::size_t(a.size()) != n)
+    throw py::value_error(std::string("write_las: the LAS field '") + name + "' has not one value per point");
+  return a;
+}
+
+// The records of the fields of las_fields_dict().
+std::vector<cas3::Las_record> las_records_of(const py::dict& fields, std::size_t n)
+{
+  std::vector<cas3::Las_record> records(n);
+  auto X = field<std::int32_t>(fields, "X", n), Y = field<std::int32_t>(fields, "Y", n),
+       Z = field<std::int32_t>(fields, "Z", n);
+  auto intensity = field<std::uint16_t>(fields, "intensity", n);
+  auto return_number = field<std::uint8_t>(fields, "return_number", n);
+  auto number_of_returns = field<std::uint8_t>(fields, "number_of_returns", n);
+  auto classification = field<std::uint8_t>(fields, "classification", n);
+  auto synthetic = field<bool>(fields, "synthetic", n), key_point = field<bool>(fields, "key_point", n),
+       withheld = field<bool>(fields, "withheld", n), overlap = field<bool>(fields, "overlap", n);
+  auto scanner_channel = field<std::uint8_t>(fields, "scanner_channel", n);
+  auto scan_direction = field<std::uint8_t>(fields, "scan_direction", n);
+  auto edge = field<std::uint8_t>(fields, "edge_of_flight_line", n);
+  auto user_data = field<std::uint8_t>(fields, "user_data", n);
+  auto scan_angle = field<std::int16_t>(fields, "scan_angle", n);
+  auto point_source_id = field<std::uint16_t>(fields, "point_source_id", n);
+  auto gps_time = field<double>(fields, "gps_time", n);
+  auto red = field<std::uint16_t>(fields, "red", n), green = field<std::uint16_t>(fields, "green", n),
+       blue = field<std::uint16_t>(fields, "blue", n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    cas3::Las_record& r = records[i];
+    r.X = X.data()[i];
+    r.Y = Y.data()[i];
+    r.Z = Z.data()[i];
+    r.intensity = intensity.data()[i];
+    r.return_number = return_number.data()[i];
+    r.number_of_returns = number_of_returns.data()[i];
+    r.classification = classification.data()[i];
+    r.flags = std::uint8_t((synthetic.data()[i] ? 1 : 0) | (key_point.data()[i] ? 2 : 0) | (withheld.data()[i] ? 4 : 0)
+                           | (overlap.data()[i] ? 8 : 0));
+    r.scanner_channel = scanner_channel.data()[i];
+    r.scan_direction = scan_direction.data()[i];
+    r.edge_of_flight_line = edge.data()[i];
+    r.user_data = user_data.data()[i];
+    r.scan_angle = scan_angle.data()[i];
+    r.point_source_id = point_source_id.data()[i];
+    r.gps_time = gps_time.data()[i];
+    r.red = red.data()[i];
+    r.green = green.data()[i];
+    r.blue = blue.data()[i];
+  }
+  return records;
+}
+
+cas3::Las_filter las_filter_of(const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns)
+{
+  cas3::Las_filter filter;
+  try
+  {
+    filter.classes = cas3::parse_las_classes("classes", classes);
+    filter.returns = cas3::parse_las_returns("returns", returns);
+  }
+  catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
+  filter.drop_withheld = drop_withheld;
+  return filter;
+}
+
+py::dict las_header_dict(const cas3::Las_header& h)
+{
+  py::dict d;
+  d["version"] = std::to_string(h.version_major) + "." + std::to_string(h.version_minor);
+  d["point_format"] = h.point_format;
+  d["number_of_points"] = h.number_of_points;
+  d["scale"] = py::make_tuple(h.scale[0], h.scale[1], h.scale[2]);
+  d["offset"] = py::make_tuple(h.offset[0], h.offset[1], h.offset[2]);
+  d["rgb"] = cas3::las_detail::has_rgb(h.point_format);
+  d["file_source_id"] = h.file_source_id;
+  d["global_encoding"] = h.global_encoding;
+  d["creation_day"] = h.creation_day;
+  d["creation_year"] = h.creation_year;
+  return d;
+}
+
+py::dict counts_dict(const cas3::Las_filter_counts& c)
+{
+  py::dict d;
+  d["read"] = c.read;
+  d["classes"] = c.classes;
+  d["withheld"] = c.withheld;
+  d["returns"] = c.returns;
+  return d;
+}
+
+py::array_t<double> points_array(const std::vector<Point>& points)
+{
+  py::array_t<double> out = new_triples(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    put_triple(out.mutable_data(), i, points[i] - CGAL::ORIGIN);
+  return out;
+}
+
+// The program's reader: .xyz, .pwn, .ply, .off, .obj, .las (with the
+// filters). A dict: points, normals (or None), and for LAS las (its
+// header), fields (las_fields_dict()), counts and summary.
+py::dict read_point_cloud(const std::string& path, const std::vector<std::string>& classes, bool drop_withheld,
+                          const std::string& returns)
+{
+  const cas3::Las_filter filter = las_filter_of(classes, drop_withheld, returns);
   cas3::Point_cloud cloud;
   {
     py::gil_scoped_release release;
-    try { cloud = cas3::read_point_cloud(path); }
+    try { cloud = cas3::read_point_cloud(path, filter); }
     catch(const cas3::Read_error& e) { throw std::invalid_argument(e.what()); }
   }
-  py::array_t<double> points = new_triples(cloud.points.size());
-  for(std::size_t i = 0; i < cloud.points.size(); ++i)
-    put_triple(points.mutable_data(), i, cloud.points[i] - CGAL::ORIGIN);
+  if(filter.active() && !cloud.las.present)
+    throw py::value_error(path + ": classes, drop_withheld and returns filter LAS input (.las)");
+  py::dict d;
+  d["points"] = points_array(cloud.points);
   if(cloud.normals.empty())
-    return py::make_tuple(points, py::none());
-  py::array_t<double> normals = new_triples(cloud.normals.size());
-  for(std::size_t i = 0; i < cloud.normals.size(); ++i)
-    put_triple(normals.mutable_data(), i, cloud.normals[i]);
-  return py::make_tuple(points, normals);
+    d["normals"] = py::none();
+  else
+  {
+    py::array_t<double> normals = new_triples(cloud.normals.size());
+    for(std::size_t i = 0; i < cloud.normals.size(); ++i)
+      put_triple(normals.mutable_data(), i, cloud.normals[i]);
+    d["normals"] = normals;
+  }
+  if(cloud.las.present)
+  {
+    d["las"] = las_header_dict(cloud.las.header);
+    d["fields"] = las_fields_dict(cloud.las.records);
+    d["counts"] = counts_dict(cloud.las.counts);
+    d["summary"] = cas3::las_input_summary(path, cloud.las.header, filter, cloud.las.counts);
+  }
+  return d;
+}
+
+// The records first to first + count - 1 of the LAS file `path` that the
+// filters keep, read without the rest: a dict of points, fields, counts
+// (of this range) and las (the header).
+py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint64_t count,
+                        const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns)
+{
+  const cas3::Las_filter filter = las_filter_of(classes, drop_withheld, returns);
+  const std::vector<bool> class_kept = cas3::las_classes_kept(filter);
+  cas3::Las_filter_counts counts;
+  std::vector<cas3::Las_record> records, kept;
+  std::vector<Point> points;
+  cas3::Las_header header;
+  {
+    py::gil_scoped_release release;
+    try
+    {
+      cas3::Las_file file(path);
+      header = file.header();
+      file.read(first, count, records);
+      for(std::size_t i = 0; i < records.size(); ++i)
+      {
+        if(!cas3::keep_las_record(records[i], filter, class_kept, counts))
+          continue;
+        const std::array<double, 3> p = file.position(records[i]);
+        if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+          throw cas3::Read_error(path + ": point " + std::to_string(first + i) + ": coordinate is NaN or infinite");
+        points.emplace_back(p[0], p[1], p[2]);
+        kept.push_back(records[i]);
+      }
+    }
+    catch(const cas3::Read_error& e) { throw std::invalid_argument(e.what()); }
+  }
+  py::dict d;
+  d["points"] = points_array(points);
+  d["fields"] = las_fields_dict(kept);
+  d["counts"] = counts_dict(counts);
+  d["las"] = las_header_dict(header);
+  return d;
+}
+
+// What write_las and the tiles' LAS writer share: the output header of
+// `info` (scale, offset, rgb and, from a LAS input, file_source_id,
+// global_encoding, creation_day, creation_year) and the layers' labels.
+cas3::Las_output_header las_output_header(const py::dict& info, const std::vector<std::string>& labels)
+{
+  cas3::Las_output_header h;
+  const auto scale = info["scale"].cast<std::vector<double> >(), offset = info["offset"].cast<std::vector<double> >();
+  if(scale.size() != 3 || offset.size() != 3)
+    throw py::value_error("write_las: scale and offset have three values");
+  for(int k = 0; k < 3; ++k)
+  {
+    if(!std::isfinite(scale[std::size_t(k)]) || scale[std::size_t(k)] == 0 || !std::isfinite(offset[std::size_t(k)]))
+      throw py::value_error("write_las: a scale that is not finite and nonzero, or an offset that is not finite");
+    h.scale[k] = scale[std::size_t(k)];
+    h.offset[k] = offset[std::size_t(k)];
+  }
+  h.rgb = info["rgb"].cast<bool>();
+  for(const char* key : {"file_source_id", "global_encoding", "creation_day", "creation_year"})
+    if(info.contains(key))
+    {
+      const std::uint16_t value = info[key].cast<std::uint16_t>();
+      const std::string k = key;
+      (k == "file_source_id" ? h.file_source_id : k == "global_encoding" ? h.global_encoding
+                                                 : k == "creation_day"   ? h.creation_day
+                                                                         : h.creation_year) = value;
+    }
+  try { h.extra = cas3::las_extra_fields(labels); }
+  catch(const std::invalid_argument& e) { throw py::value_error(e.what()); }
+  return h;
+}
+
+// The scale and offset of points that do not come from a LAS file, from
+// their bounds: ((sx, sy, sz), (ox, oy, oz)).
+py::tuple las_scale(const std::vector<double>& low, const std::vector<double>& high)
+{
+  if(low.size() != 3 || high.size() != 3)
+    throw py::value_error("las_scale: three lows and three highs");
+  cas3::Las_output_header h;
+  try { cas3::choose_las_scale(low.data(), high.data(), h); }
+  catch(const std::invalid_argument& e) { throw py::value_error(e.what()); }
+  return py::make_tuple(py::make_tuple(h.scale[0], h.scale[1], h.scale[2]),
+                        py::make_tuple(h.offset[0], h.offset[1], h.offset[2]));
+}
+
+// The point records of a LAS 1.4 file (format 6 or 7 and the extra bytes
+// of the layers) for the points, their outlier flags and the layers: the
+// LAS input's fields when `fields` is a dict (las_fields_dict()), else the
+// points written with the scale and offset of `info`. Returns (bytes,
+// stats) where stats holds the records' smallest and largest scaled
+// integers (min, max) and their counts by return (by_return), for
+// las_header().
+py::tuple las_records(const Doubles& points_array_in, const py::array_t<bool>& outlier, const py::list& layers,
+                      const py::object& fields, const py::dict& info)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array_in, "points");
+  const std::size_t n = points.size();
+  const std::vector<bool> is_outlier = outlier_flags(outlier, n, "write_las");
+  const std::vector<cas3::Layer> values = layers_from_python(layers, n, "write_las");
+  std::vector<std::string> labels;
+  for(const cas3::Layer& layer : values)
+    labels.push_back(layer.label);
+  cas3::Las_output_header h = las_output_header(info, labels);
+  std::vector<cas3::Las_record> records;
+  if(!fields.is_none())
+    records = las_records_of(fields.cast<py::dict>(), n);
+  else
+  {
+    records.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double xyz[3] = {points[i].x(), points[i].y(), points[i].z()};
+      for(int k = 0; k < 3; ++k)
+        if(!(std::abs((xyz[k] - h.offset[k]) / h.scale[k]) < 2147483647.0))
+          throw py::value_error("write_las: point " + std::to_string(i) + " is beyond the range of the scale and offset");
+      cas3::quantize_las(h, xyz, records[i]);
+      records[i].return_number = records[i].number_of_returns = 1;
+    }
+  }
+  std::ostringstream out;
+  {
+    py::gil_scoped_release release;
+    cas3::write_las_point_records(out, n, h, [&](std::size_t i) { return records[i]; }, is_outlier, values);
+  }
+  std::int64_t low[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, high[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+  std::vector<std::uint64_t> by_return(15, 0);
+  for(const cas3::Las_record& r : records)
+  {
+    const std::int32_t xyz[3] = {r.X, r.Y, r.Z};
+    for(int k = 0; k < 3; ++k)
+    {
+      low[k] = std::min<std::int64_t>(low[k], xyz[k]);
+      high[k] = std::max<std::int64_t>(high[k], xyz[k]);
+    }
+    if(r.return_number >= 1 && r.return_number <= 15)
+      ++by_return[r.return_number - 1u];
+  }
+  py::dict stats;
+  stats["min"] = py::make_tuple(low[0], low[1], low[2]);
+  stats["max"] = py::make_tuple(high[0], high[1], high[2]);
+  stats["by_return"] = by_return;
+  return py::make_tuple(py::bytes(out.str()), stats);
+}
+
+// The header and Extra Bytes VLR of a LAS 1.4 file of `count` records of
+// las_records() (info, labels), with the merged stats of its chunks.
+py::bytes las_header(const py::dict& info, const std::vector<std::string>& labels, std::uint64_t count,
+                     const std::vector<std::int64_t>& low, const std::vector<std::int64_t>& high,
+                     const std::vector<std::uint64_t>& by_return)
+{
+  cas3::Las_output_header h = las_output_header(info, labels);
+  if(low.size() != 3 || high.size() != 3 || by_return.size() != 15)
+    throw py::value_error("las_header: three lows, three highs, 15 counts by return");
+  h.number_of_points = count;
+  for(int k = 0; k < 3; ++k)
+  {
+    h.min[k] = count == 0 ? 0 : double(low[std::size_t(k)]) * h.scale[k] + h.offset[k];
+    h.max[k] = count == 0 ? 0 : double(high[std::size_t(k)]) * h.scale[k] + h.offset[k];
+    if(h.scale[k] < 0)
+      std::swap(h.min[k], h.max[k]);
+  }
+  std::copy(by_return.begin(), by_return.end(), h.points_by_return);
+  return py::bytes(cas3::las_header_bytes(h));
 }
 
 CAS3::Surface_extraction extraction_named(const std::string& name)
@@ -777,7 +1146,15 @@ PYBIND11_MODULE(_native, m)
          })
     .def("release", &Job::release);
   m.def("write_point_cloud", &write_point_cloud);
-  m.def("read_point_cloud", &read_point_cloud);
+  m.def("read_point_cloud", &read_point_cloud, py::arg("path"), py::arg("classes"), py::arg("drop_withheld"),
+        py::arg("returns"));
+  m.def("read_las_chunk", &read_las_chunk, py::arg("path"), py::arg("first"), py::arg("count"), py::arg("classes"),
+        py::arg("drop_withheld"), py::arg("returns"));
+  m.def("las_scale", &las_scale);
+  m.def("las_records", &las_records, py::arg("points"), py::arg("outlier"), py::arg("layers"), py::arg("fields"),
+        py::arg("info"));
+  m.def("las_header", &las_header, py::arg("info"), py::arg("labels"), py::arg("count"), py::arg("low"),
+        py::arg("high"), py::arg("by_return"));
   m.def("vertex_curvatures", &vertex_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("rings"),
         py::arg("radius"), py::arg("estimator"));
   m.def("estimate_noise", &estimate_noise);

@@ -8,7 +8,9 @@ The package of the CGAL package Conformal_alpha_shapes_3, for numpy:
 - ``ConformalAlphaShape(points)``: the filtration, its spectrum, its scale
   suggestion and its surfaces as (vertices, faces) arrays.
 - ``vertex_curvatures(vertices, faces)``: curvature of a triangle mesh.
-- ``estimate_noise(points)``, ``denoise(points)``, ``read_point_cloud(path)``.
+- ``estimate_noise(points)``, ``denoise(points)``, ``read_point_cloud(path)``
+  (.xyz, .pwn, .ply, .off, .obj and LAS, with LiDAR filters); ``Result.write_ply``
+  and ``Result.write_las`` write the values per point.
 - ``front_closing_values(points)``: the front's share of the automatic scale,
   per point, for tiled runs (``conformal_alpha_shapes.tiles``).
 
@@ -32,6 +34,7 @@ __all__ = [
     "ConformalAlphaShape",
     "Layer",
     "NoiseEstimate",
+    "PointCloud",
     "Result",
     "denoise",
     "estimate_noise",
@@ -216,6 +219,52 @@ class Result:
                 out[direction + axis] = getattr(layer, direction)[:, i]
         out["outlier"] = self.outlier
         return out
+
+    def write_las(self, path, cloud=None):
+        """Writes the values per point as LAS 1.4 to ``path`` (the program's ``--las``).
+
+        Point format 6, or 7 when ``cloud`` has colors; the curvature values
+        as extra bytes described by the Extra Bytes VLR (record 4 of
+        LASF_Spec) under the PLY's names (``outlier``, ``nx_L`` .. ``distance_L``
+        as float32, ``source_L``), which lidR, PDAL and CloudCompare read as
+        named attributes. ``cloud``: the ``PointCloud`` that
+        ``read_point_cloud`` gave for a LAS file, whose points these are:
+        its scaled integers, scale, offset and fields (classification,
+        returns, intensity, flags, GPS time, colors) are written as read.
+        Without it the points are written with a power-of-ten scale that
+        holds their range (at most half a step from each coordinate). The
+        file is written beside ``path`` and renamed into place.
+        """
+        if cloud is not None and getattr(cloud, "fields", None) is None:
+            raise ValueError("write_las: cloud must be the PointCloud of a LAS file (read_point_cloud)")
+        if cloud is not None and len(cloud.fields["X"]) != len(self._points):
+            raise ValueError(f"write_las: the cloud has {len(cloud.fields['X'])} points, the result "
+                             f"{len(self._points)}")
+        if cloud is not None:
+            info = dict(cloud.las)
+            fields = cloud.fields
+        else:
+            if len(self._points):
+                scale, offset = _native.las_scale(list(self._points.min(axis=0)), list(self._points.max(axis=0)))
+            else:
+                scale, offset = (0.001,) * 3, (0.0,) * 3
+            info = {"scale": scale, "offset": offset, "rgb": False}
+            fields = None
+        layers = [vars(self[name]) for name in self.layers]
+        records, stats = _native.las_records(self._points, self.outlier, layers, fields, info)
+        header = _native.las_header(info, list(self.layers), len(self._points), list(stats["min"]),
+                                    list(stats["max"]), list(stats["by_return"]))
+        path = os.fspath(path)
+        folder = os.path.dirname(os.path.abspath(path))
+        handle, temporary = tempfile.mkstemp(prefix=".", suffix=".las.part", dir=folder)
+        try:
+            with os.fdopen(handle, "wb") as f:
+                f.write(header)
+                f.write(records)
+            os.replace(temporary, path)
+        except BaseException:
+            os.unlink(temporary)
+            raise
 
     def write_ply(self, path):
         """Writes the program's ``curvatures.ply`` (the same bytes) to ``path``.
@@ -498,6 +547,64 @@ def denoise(points, neighbors=None):
     return _native.denoise(_triples(points, "points"), None if neighbors is None else int(neighbors))
 
 
-def read_point_cloud(path):
-    """The points (and normals, or None) of a .xyz, .pwn, .ply, .off or .obj file, as the program reads them."""
-    return _native.read_point_cloud(os.fspath(path))
+class PointCloud(tuple):
+    """What ``read_point_cloud`` returns: the pair ``(points, normals)``, with
+
+    points: (N, 3) float64; normals: (N, 3) float64 or None;
+    fields: for a LAS file, a dict of (N,) arrays, the fields of the points
+        kept: classification, return_number, number_of_returns, intensity,
+        withheld, synthetic, key_point, overlap (bool), gps_time,
+        point_source_id, user_data, scan_angle (int16, in 0.006 degrees),
+        scanner_channel, scan_direction, edge_of_flight_line, red, green,
+        blue, nir, and the scaled integers X, Y, Z; else None;
+    las: for a LAS file, its header (version, point_format, number_of_points,
+        scale, offset, rgb, ...); else None;
+    counts: for a LAS file, how many points were read and how many each
+        filter kept, in order (read, classes, withheld, returns); else None;
+    summary: for a LAS file, the program's summary line of the input.
+    """
+
+    def __new__(cls, native):
+        self = super().__new__(cls, (native["points"], native["normals"]))
+        self.points = native["points"]
+        self.normals = native["normals"]
+        self.fields = native.get("fields")
+        self.las = native.get("las")
+        self.counts = native.get("counts")
+        self.summary = native.get("summary")
+        return self
+
+    def __repr__(self):
+        kind = f" LAS {self.las['version']} format {self.las['point_format']}" if self.las else ""
+        return f"<PointCloud{kind}: {len(self.points)} points>"
+
+
+def read_point_cloud(path, *, classes=None, drop_withheld=False, returns="all"):
+    """The points of a .xyz, .pwn, .ply, .off, .obj or .las file, as the program reads them.
+
+    Returns a ``PointCloud``: unpacks as ``points, normals = read_point_cloud(path)``
+    (normals None when the file has none), and for a LAS file (1.0 to 1.4,
+    point formats 0 to 10, uncompressed) holds the points' fields as arrays
+    (``cloud.fields["classification"]``, ...), the header and the filters'
+    counts. The filters, for LAS only (the program's ``--classes``,
+    ``--drop-withheld`` and ``--returns``):
+
+        classes: the classes to keep (e.g. ``[2, 6]``), None for all;
+        drop_withheld: leave out the points flagged withheld;
+        returns: "all", "first" (return number 1, or 0: unset) or "last"
+            (return number = number of returns).
+
+    Raises:
+        ValueError: a bad file, naming it and what is wrong (a .laz file or a
+            compressed LAS is refused, with how to decompress it), a filter on
+            other input, a bad filter.
+    """
+    if classes is None:
+        classes = ()
+    elif isinstance(classes, numbers.Integral):
+        classes = (classes,)
+    classes = _option_items(classes, "classes", integers=True)
+    if not isinstance(drop_withheld, bool):
+        raise TypeError(f"drop_withheld must be a bool, got {drop_withheld!r}")
+    return PointCloud(_native.read_point_cloud(os.fspath(path), classes, drop_withheld,
+                                               _choice(returns, "returns")))

@@ -26,6 +26,14 @@ class Layer:
     def __getitem__(self, key: str) -> np.ndarray: ...
     def keys(self) -> List[str]: ...
 
+class PointCloud(Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]]]):
+    points: npt.NDArray[np.float64]
+    normals: Optional[npt.NDArray[np.float64]]
+    fields: Optional[Dict[str, np.ndarray]]
+    las: Optional[Dict[str, object]]
+    counts: Optional[Dict[str, int]]
+    summary: Optional[str]
+
 class Result:
     layers: Tuple[str, ...]
     outlier: npt.NDArray[np.bool_]
@@ -38,6 +46,7 @@ class Result:
     def __len__(self) -> int: ...
     def to_structured(self, name: str) -> np.ndarray: ...
     def write_ply(self, path: Union[str, os.PathLike]) -> None: ...
+    def write_las(self, path: Union[str, os.PathLike], cloud: Optional[PointCloud] = ...) -> None: ...
 
 def multiscale_curvatures(
     points: _Points,
@@ -95,5 +104,9 @@ class NoiseEstimate(float):
 def estimate_noise(points: _Points) -> NoiseEstimate: ...
 def denoise(points: _Points, neighbors: Optional[int] = ...) -> npt.NDArray[np.float64]: ...
 def read_point_cloud(
-    path: Union[str, os.PathLike]
-) -> Tuple[npt.NDArray[np.float64], Optional[npt.NDArray[np.float64]]]: ...
+    path: Union[str, os.PathLike],
+    *,
+    classes: Optional[Union[int, Sequence[int]]] = ...,
+    drop_withheld: bool = ...,
+    returns: str = ...,
+) -> PointCloud: ...
