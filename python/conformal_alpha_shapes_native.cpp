@@ -363,12 +363,12 @@ struct Step_costs
     return denoising == CAS3::ALWAYS_DENOISE ? 1.6 : denoising == CAS3::NEVER_DENOISE ? 1.0 : 1.3;
   }
   static constexpr double front_and_surface = 1.1;
-  static constexpr double surface = 0.3;
+  static constexpr double surface = 0.2;
   static double curvature(const std::vector<CAS3::Neighborhood>& neighborhoods)
   {
-    double cost = 0.2;
+    double cost = 0.1;
     for(const CAS3::Neighborhood& n : neighborhoods)
-      cost += n.kind() == CAS3::Neighborhood::AUTOMATIC ? 1.2 : n.kind() == CAS3::Neighborhood::RINGS ? 0.3 : 0.4;
+      cost += n.kind() == CAS3::Neighborhood::AUTOMATIC ? 1.2 : n.kind() == CAS3::Neighborhood::RINGS ? 0.3 : 0.35;
     return cost;
   }
   // seconds per point of a cost of 1 before any step was timed (two cores)

@@ -127,15 +127,19 @@ def _same_number(a, b):
     return a == b or (a != a and b != b)
 
 
+def _points_text(n):
+    return f"{n} point" if n == 1 else f"{n} points"
+
+
 def _check_shape_points(function, points):
     if len(points) < 4:
-        raise ValueError(f"{function}: {len(points)} points; at least 4 that are not coplanar are needed "
+        raise ValueError(f"{function}: {_points_text(len(points))}; at least 4 that are not coplanar are needed "
                          "(the shape is built on their 3D Delaunay triangulation)")
 
 
 def _check_noise_points(function, points):
     if len(points) < _NOISE_POINTS:
-        raise ValueError(f"{function}: {len(points)} points; at least {_NOISE_POINTS} are needed (the noise and "
+        raise ValueError(f"{function}: {_points_text(len(points))}; at least {_NOISE_POINTS} are needed (the noise and "
                          f"the sample spacing are estimated from each point's {_NOISE_POINTS - 1} nearest neighbors)")
 
 
@@ -423,7 +427,7 @@ def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_ne
     radii = _option_items(radii, "radii")
     in_spacings = [item for item in radii if item == "auto" or item.endswith("s")]
     if needs_spacing and spacing is None and in_spacings and len(points) < _NOISE_POINTS:
-        raise ValueError(f"{function}: {len(points)} points; radii in sample spacings ({', '.join(in_spacings)}) "
+        raise ValueError(f"{function}: {_points_text(len(points))}; radii in sample spacings ({', '.join(in_spacings)}) "
                          f"need the sample spacing, estimated from each point's {_NOISE_POINTS - 1} nearest "
                          f"neighbors: at least {_NOISE_POINTS} points; give the radii as lengths (radii=[0.1]) or "
                          "rings (rings=[1], radii=[]), or spacing= and noise=")
