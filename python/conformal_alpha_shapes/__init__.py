@@ -711,6 +711,12 @@ class NoiseEstimate(float):
                                  "calls_for_denoising": self.calls_for_denoising},))
 
 
+def _unchecked_noise_estimate(points):
+    """The library's estimate as it is: all zero for fewer than 25 points or no fit (tiled runs
+    pool it over tiles, some of which may be that small)."""
+    return NoiseEstimate(_native.estimate_noise(_triples(points, "points")))
+
+
 def estimate_noise(points):
     """The noise of a point sample of a surface, in sample spacings (a ``NoiseEstimate``).
 
@@ -721,7 +727,7 @@ def estimate_noise(points):
     """
     points = _triples(points, "points")
     _check_noise_points("estimate_noise", points)
-    estimate = NoiseEstimate(_native.estimate_noise(points))
+    estimate = _unchecked_noise_estimate(points)
     if not estimate.spacing > 0:
         raise ValueError(f"estimate_noise: the noise and the sample spacing cannot be estimated on these "
                          f"{len(points)} points: no sampled point has {_NOISE_POINTS - 1} nearest neighbors that are "

@@ -401,6 +401,9 @@ def test_bad_input_fails_before_any_file_is_written(tmp_path):
         tiles.process_tiles(nan, tmp_path / "out", workers=1)
     good = tmp_path / "good.xyz"
     good.write_text("0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+    with pytest.raises(tiles.TileError, match=r"good.xyz: 4 points; a tiled run needs at least 25: .* 24 nearest"):
+        tiles.process_tiles(good, tmp_path / "out", workers=1)
+    assert not (tmp_path / "out").exists()
     with pytest.raises(tiles.TileError, match=r"scheduler: tls://127.0.0.1:1 needs security="):
         tiles.process_tiles(good, tmp_path / "out", scheduler="tls://127.0.0.1:1")
     run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(good), "--output",
