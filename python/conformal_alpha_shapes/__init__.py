@@ -131,6 +131,13 @@ def _points_text(n):
     return f"{n} point" if n == 1 else f"{n} points"
 
 
+def _same_report(a, b):
+    """Equality of surface reports (dicts of numbers, NaN equal to NaN) or Nones."""
+    if a is None or b is None:
+        return a is None and b is None
+    return a.keys() == b.keys() and all(_same_number(a[key], b[key]) for key in a)
+
+
 def _check_shape_points(function, points):
     if len(points) < 4:
         raise ValueError(f"{function}: {_points_text(len(points))}; at least 4 that are not coplanar are needed "
@@ -212,7 +219,7 @@ class Layer:
         if not isinstance(other, Layer):
             return NotImplemented
         return (self.name == other.name and _same_number(self.a, other.a) and self.description == other.description
-                and self.surface == other.surface
+                and _same_report(self.surface, other.surface)
                 and all(_arrays_equal(getattr(self, key), getattr(other, key)) for key in self._arrays))
 
     __hash__ = None
