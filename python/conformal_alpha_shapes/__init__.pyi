@@ -36,6 +36,7 @@ class Result:
     spacing: Optional[float]
     noise: Optional[float]
     denoised: Optional[bool]
+    merged: Optional[int]
     @property
     def points(self) -> npt.NDArray[np.float64]: ...
     def __getitem__(self, name: str) -> Layer: ...

@@ -36,6 +36,12 @@ def clean_environment(**extra):
     return env
 
 
+def require_module(name, package):
+    import importlib.util
+    if importlib.util.find_spec(name) is None:
+        pytest.fail(f"{sys.executable} has no module {name}: apt-get install {package}")
+
+
 def run(command, **kwargs):
     done = subprocess.run(command, capture_output=True, text=True, **kwargs)
     assert done.returncode == 0, f"{command} failed:\n{done.stdout}\n{done.stderr}"
@@ -57,6 +63,9 @@ def reuse_build():
 
 
 def test_pip_install_into_a_virtual_environment(source_copy, tmp_path):
+    require_module("ensurepip", "python3-venv")
+    require_module("setuptools", "python3-setuptools")
+    require_module("wheel", "python3-wheel")
     venv = tmp_path / "venv"
     run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)])
     pip = [str(venv / "bin" / "python"), "-m", "pip"]
@@ -82,6 +91,7 @@ def test_pip_install_into_a_virtual_environment(source_copy, tmp_path):
 
 
 def test_build_makes_a_wheel_and_a_source_distribution(source_copy, tmp_path):
+    require_module("build", "python3-build")
     dist = tmp_path / "dist"
     run([sys.executable, "-m", "build", "--no-isolation", "--outdir", str(dist), str(source_copy)],
         env=clean_environment(**reuse_build()))
