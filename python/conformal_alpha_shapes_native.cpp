@@ -3,7 +3,7 @@
 // shapes and types are checked by the Python half (conformal_alpha_shapes/
 // __init__.py) and again here, so that this module never crashes on what a
 // caller passes. The GIL is released while the library computes, which
-// stops on Ctrl-C (without_gil) and reports its progress between steps.
+// stops on Ctrl-C (without_gil) and reports its progress (Checkpoint).
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -90,21 +91,119 @@ private:
 #endif
 };
 
+// The caller's progress(stage, fraction) over the steps of a computation,
+// and Ctrl-C. Each step spans a share of [0, 1] in proportion to the time it
+// is expected to take (Step_costs). At a step's start the fraction is the end
+// of the step before; inside it, the library's interruption checks (every
+// 20 ms or so of its work, see without_gil) move it on with the time spent
+// against the time expected, slowing down near the step's end, which it
+// reaches only when the step ends. The callable is called at each step's
+// start and at most every 0.1 s inside; the fractions never decrease, and
+// the last call is ("done", 1.0).
+class Checkpoint
+{
+  typedef std::chrono::steady_clock Clock;
+  struct State
+  {
+    py::object progress;
+    std::string stage;
+    double begin = 0, end = 0, expected_seconds = 1, reported = -1;
+    Clock::time_point started = Clock::now(), last_call = Clock::now();
+  };
+
+public:
+  explicit Checkpoint(py::object progress = py::none()) : m_state(std::make_shared<State>())
+  {
+    m_state->progress = std::move(progress);
+  }
+
+  // With the GIL released: enters the step `stage`, which ends at fraction
+  // `end` and is expected to take `seconds`; raises KeyboardInterrupt on Ctrl-C.
+  void step(const std::string& stage, double end, double seconds) const
+  {
+    py::gil_scoped_acquire gil;
+    if(PyErr_CheckSignals() != 0)
+      throw py::error_already_set();
+    State& s = *m_state;
+    s.begin = (std::max)(s.end, 0.0);
+    s.end = (std::min)((std::max)(end, s.begin), 1.0);
+    s.stage = stage;
+    s.expected_seconds = (std::max)(seconds, 1e-3);
+    s.started = Clock::now();
+    report(s.begin, true);
+  }
+
+  // With the GIL held: the fraction moved on by the time spent in the step.
+  void tick() const
+  {
+    State& s = *m_state;
+    if(s.progress.is_none() || Clock::now() - s.last_call < std::chrono::milliseconds(100))
+      return;
+    const double x = seconds_in_step() / s.expected_seconds;
+    // linear up to 0.8 of the step, then approaching its end
+    const double g = x <= 0.8 ? x : 0.8 + 0.2 * (1 - std::exp(-(x - 0.8) / 0.2));
+    report(s.begin + (s.end - s.begin) * g, false);
+  }
+
+  // With the GIL released: the last call, ("done", 1.0).
+  void finish() const
+  {
+    py::gil_scoped_acquire gil;
+    m_state->stage = "done";
+    m_state->end = 1.0;
+    report(1.0, true);
+  }
+
+  double seconds_in_step() const
+  {
+    return std::chrono::duration<double>(Clock::now() - m_state->started).count();
+  }
+  // the fraction the current step ends at
+  double end_of_step() const { return m_state->end; }
+
+private:
+  void report(double fraction, bool always) const
+  {
+    State& s = *m_state;
+    fraction = (std::max)(fraction, s.reported);
+    if(s.progress.is_none() || (!always && fraction <= s.reported))
+      return;
+    s.progress(s.stage, fraction);
+    s.reported = fraction;
+    s.last_call = Clock::now();
+  }
+
+  std::shared_ptr<State> m_state;
+};
+
 // Runs `work()` with the GIL released, and stops it on Ctrl-C: the
 // library's loops call the check below every 20 ms or so on this thread
 // (interruption.h); it takes the GIL, and when Python has a signal's
 // exception (KeyboardInterrupt) asks the library to stop, which unwinds
 // `work()` with Interrupted, turned back into the Python exception here.
+// With a `checkpoint`, the same checks move its progress on; an exception of
+// the progress callable stops the work the same way.
 template <class Work>
-auto without_gil(Work work)
+auto without_gil(Work work, const Checkpoint* checkpoint = nullptr)
 {
   std::unique_ptr<py::error_already_set> pending;
-  const CAS3::Scoped_interruption_check check([&pending] {
+  const CAS3::Scoped_interruption_check check([&pending, checkpoint] {
     py::gil_scoped_acquire gil;
-    if(PyErr_CheckSignals() == 0)
-      return false;
-    pending = std::make_unique<py::error_already_set>();
-    return true;
+    if(PyErr_CheckSignals() != 0)
+    {
+      pending = std::make_unique<py::error_already_set>();
+      return true;
+    }
+    if(checkpoint)
+    {
+      try { checkpoint->tick(); }
+      catch(py::error_already_set& e)
+      {
+        pending = std::make_unique<py::error_already_set>(std::move(e));
+        return true;
+      }
+    }
+    return false;
   });
   try
   {
@@ -123,27 +222,6 @@ auto without_gil(Work work)
     throw;
   }
 }
-
-// Called by the computation, with the GIL released, between its steps: takes
-// the GIL, raises KeyboardInterrupt (as a C++ exception that unwinds the
-// computation) when Ctrl-C was pressed, and calls the caller's progress
-// function.
-class Checkpoint
-{
-public:
-  explicit Checkpoint(py::object progress) : m_progress(std::move(progress)) {}
-  void operator()(const std::string& stage, double fraction) const
-  {
-    py::gil_scoped_acquire gil;
-    if(PyErr_CheckSignals() != 0)
-      throw py::error_already_set();
-    if(!m_progress.is_none())
-      m_progress(stage, fraction);
-  }
-
-private:
-  py::object m_progress;
-};
 
 template <class T>
 py::array_t<T> new_array(std::size_t n)
@@ -272,6 +350,33 @@ Job_options read_job_options(const std::vector<std::string>& scales, const std::
   catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
 }
 
+// The time the steps of a job take, relative to each other, per point: the
+// Delaunay triangulation, poles and conformal values with the input checks,
+// the noise estimate and the smoothing (about half of it with the noisy
+// scans that are smoothed); the advancing front with the first surface cut
+// from it, a later surface; the curvature of a surface, its transfer to the
+// points and the arrays, per neighborhood (the automatic one fits up to 22.6
+// spacings). Measured on 100k to 300k point ellipsoids, clean and noisy, on
+// two cores; a step's share of the bar follows its share of the time.
+struct Step_costs
+{
+  static double shape(CAS3::Denoising denoising)
+  {
+    return denoising == CAS3::ALWAYS_DENOISE ? 1.6 : denoising == CAS3::NEVER_DENOISE ? 1.0 : 1.3;
+  }
+  static constexpr double front_and_surface = 1.1;
+  static constexpr double surface = 0.2;
+  static double curvature(const std::vector<CAS3::Neighborhood>& neighborhoods)
+  {
+    double cost = 0.1;
+    for(const CAS3::Neighborhood& n : neighborhoods)
+      cost += n.kind() == CAS3::Neighborhood::AUTOMATIC ? 1.2 : n.kind() == CAS3::Neighborhood::RINGS ? 0.3 : 0.35;
+    return cost;
+  }
+  // seconds per point of a cost of 1 before any step was timed (two cores)
+  static constexpr double seconds_per_point = 1.5e-5;
+};
+
 // The program's job (conformal_curvature.cpp) without its files, split at
 // its shape: the analysis is built once (with the decisions of a larger run
 // when given), then gives its closing values or, per scale, its surface and
@@ -281,9 +386,12 @@ Job_options read_job_options(const std::vector<std::string>& scales, const std::
 class Job
 {
 public:
+  // `scales`: the number of scales the job's result() will have, or 0 when
+  // only its closing values will be asked for (the shares of the progress)
   Job(const Doubles& points_array, const std::optional<Doubles>& normals_array, const Job_options& o, int threads,
-      std::optional<double> given_spacing, std::optional<double> given_noise, const Checkpoint& checkpoint)
-    : m_options(o), m_threads(threads)
+      std::optional<double> given_spacing, std::optional<double> given_noise, const Checkpoint& checkpoint,
+      std::size_t scales)
+    : m_options(o), m_threads(threads), m_checkpoint(checkpoint)
   {
     const std::vector<Point> points = to_triples<Point>(points_array, "points");
     std::vector<Vector> normals;
@@ -296,8 +404,11 @@ public:
                               " points");
     }
     const Thread_cap cap(m_threads);
+    m_shape_cost = Step_costs::shape(o.denoising);
+    const double total = m_shape_cost + (scales == 0 ? Step_costs::front_and_surface : rest_cost(scales));
     without_gil([&] {
-      checkpoint("conformal alpha shape", 0.0);
+      checkpoint.step("conformal alpha shape", m_shape_cost / total,
+                      double(points.size()) * Step_costs::seconds_per_point * m_shape_cost);
       const auto np = CAS3::parameters::reference_normals(std::cref(normals),
         CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
       auto analyze = [&](const auto& with_noise) {
@@ -311,7 +422,8 @@ public:
                                      CAS3::Noise_estimate{*given_spacing, *given_noise, *given_noise}, np))
                                  : analyze(np);
       return 0;
-    });
+    }, &checkpoint);
+    m_seconds_per_cost = checkpoint.seconds_in_step() / m_shape_cost;
   }
 
   // Per input point, the closing value of the front (NaN off it): a tile's
@@ -319,7 +431,12 @@ public:
   py::array_t<double> closing_values() const
   {
     const Thread_cap cap(m_threads);
-    const std::vector<double> closing = without_gil([&] { return analysis().closing_values(); });
+    const std::vector<double> closing = without_gil([&] {
+      m_checkpoint.step("front", 1.0, m_seconds_per_cost * Step_costs::front_and_surface);
+      std::vector<double> values = analysis().closing_values();
+      m_checkpoint.finish();
+      return values;
+    }, &m_checkpoint);
     py::array_t<double> values = new_array<double>(closing.size());
     std::copy(closing.begin(), closing.end(), values.mutable_data());
     return values;
@@ -334,19 +451,33 @@ public:
     Analysis& analysis = *m_analysis;
     const Job_options& o = m_options;
     const Thread_cap cap(m_threads);
-    const std::size_t steps = 1 + scales.size() * (1 + o.neighborhoods.size());
-    std::size_t done = 1;  // the shape
-    auto step = [&](const std::string& stage) { checkpoint(stage, double(done++) / double(steps)); };
+    // the shares of the steps, the shape's done
+    const double total = m_shape_cost + rest_cost(scales.size());
+    double done = m_shape_cost;
+    auto step = [&](const std::string& stage, double cost) {
+      done += cost;
+      checkpoint.step(stage, done / total, m_seconds_per_cost * cost);
+    };
+    for(const CAS3::Neighborhood& n : o.neighborhoods)
+      if(n.kind() == CAS3::Neighborhood::SPACINGS || n.kind() == CAS3::Neighborhood::AUTOMATIC)
+        if(!(analysis.noise().spacing > 0))
+          throw py::value_error(
+            "multiscale_curvatures: radii in sample spacings ('auto', '4s') need the sample spacing, estimated "
+            "from each point's 24 nearest neighbors, but it could not be estimated on these " +
+            std::to_string(analysis.number_of_input_points()) +
+            " points (at least 25 are needed, not all coincident or on a line); give the radii as lengths "
+            "(radii=[0.1]) or rings (rings=[1]), or spacing= and noise=");
     py::list layers;
     without_gil([&] {
       for(const CAS3::Scale& scale : scales)
       {
-        step("surface at scale " + cas3::scale_text(scale));
+        step("surface at scale " + cas3::scale_text(scale),
+             &scale == &scales.front() ? Step_costs::front_and_surface : Step_costs::surface);
         const double a = analysis.scale_value(scale);
         Surface surface;
         const CAS3::Surface_report report = analysis.surface(a, surface);
         cas3::return_freed_memory();  // as the program does: the front's copy was freed mid-heap
-        step("curvature at scale " + cas3::scale_text(scale));
+        step("curvature at scale " + cas3::scale_text(scale), Step_costs::curvature(o.neighborhoods));
         // each layer becomes its arrays as soon as it is made: the point
         // layers' values are never all held at once
         auto layer_done = [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& values) {
@@ -359,18 +490,17 @@ public:
             layer["description"] = cas3::layer_description(analysis, a, scale, o.neighborhoods[r], label);
             layer["surface"] = report_dict(report);
             layers.append(layer);
+            checkpoint.tick();
           }
-          if(r + 1 < o.neighborhoods.size())
-            step("curvature at scale " + cas3::scale_text(scale));
         };
         if(&scale == &scales.back())
           std::move(analysis).estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
         else
           analysis.estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
       }
-      checkpoint("done", 1.0);
+      checkpoint.finish();
       return 0;
-    });
+    }, &checkpoint);
     const std::size_t n = analysis.number_of_input_points();
     py::array_t<bool> outlier = new_array<bool>(n);
     for(std::size_t i = 0; i < n; ++i)
@@ -398,6 +528,13 @@ public:
   }
 
 private:
+  // the cost of the steps after the shape, for `scales` scales
+  double rest_cost(std::size_t scales) const
+  {
+    const double per_scale = Step_costs::surface + Step_costs::curvature(m_options.neighborhoods);
+    return Step_costs::front_and_surface - Step_costs::surface + double((std::max)(scales, std::size_t(1))) * per_scale;
+  }
+
   const Analysis& analysis() const
   {
     if(!m_analysis)
@@ -407,6 +544,8 @@ private:
 
   Job_options m_options;
   int m_threads;
+  Checkpoint m_checkpoint;  // the progress of the shape and of closing_values()
+  double m_shape_cost = 1, m_seconds_per_cost = 1;
   std::unique_ptr<Analysis> m_analysis;
 };
 
@@ -421,7 +560,7 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
   const Job_options o =
     read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
   const Checkpoint checkpoint(std::move(progress));
-  Job job(points_array, normals_array, o, threads, given_spacing, given_noise, checkpoint);
+  Job job(points_array, normals_array, o, threads, given_spacing, given_noise, checkpoint, o.scales.size());
   return job.result(o.scales, checkpoint);
 }
 
@@ -899,6 +1038,19 @@ public:
     });
   }
 
+  std::size_t number_of_input_points() const { return m_shape->number_of_input_points(); }
+  int dimension() const { return m_shape->dimension(); }
+
+  // per input point, the local feature size of its vertex
+  py::array_t<double> local_feature_sizes() const
+  {
+    const std::size_t n = m_shape->number_of_input_points();
+    py::array_t<double> values = new_array<double>(n);
+    for(std::size_t i = 0; i < n; ++i)
+      values.mutable_data()[i] = m_shape->local_feature_size(m_shape->input_vertex(i));
+    return values;
+  }
+
   py::array_t<double> spectrum() const
   {
     py::array_t<double> values = new_array<double>(m_shape->number_of_alphas());
@@ -934,6 +1086,9 @@ public:
 
   py::tuple surface(std::optional<double> a, const std::string& extraction) const
   {
+    if(a && !(*a >= 0))
+      throw py::value_error("surface: the scale a must be >= 0 (or None for the automatic scale), got " +
+                            std::to_string(*a));
     const CAS3::Surface_extraction method = extraction_named(extraction);
     Surface mesh;
     without_gil([&] {
@@ -1105,8 +1260,13 @@ py::array_t<double> denoise(const Doubles& points_array, std::optional<int> neig
   if(neighbors && *neighbors < 7)
     throw py::value_error("denoise: neighbors must be >= 7, got " + std::to_string(*neighbors));
   without_gil([&] {
+    const CAS3::Noise_estimate noise = CAS3::estimate_noise(points);
+    if(!(noise.spacing > 0))
+      throw std::invalid_argument("denoise: the noise and the sample spacing, estimated from each point's 24 nearest "
+                                  "neighbors, could not be estimated on these " + std::to_string(points.size()) +
+                                  " points (at least 25 are needed, not all coincident or on a line)");
     const CAS3::Denoising_plan plan =
-      CAS3::denoising_plan(CAS3::estimate_noise(points), CAS3::ALWAYS_DENOISE, neighbors ? unsigned(*neighbors) : 0u);
+      CAS3::denoising_plan(noise, CAS3::ALWAYS_DENOISE, neighbors ? unsigned(*neighbors) : 0u);
     CAS3::denoise(points, plan);
     return plan.passes;
   });
@@ -1121,6 +1281,7 @@ py::array_t<double> denoise(const Doubles& points_array, std::optional<int> neig
 PYBIND11_MODULE(_native, m)
 {
   m.doc() = "The compiled part of conformal_alpha_shapes; use the package, not this module.";
+  m.attr("__version__") = CGAL_CAS3_VERSION;
   m.def("multiscale_curvatures", &multiscale_curvatures, py::arg("points"), py::arg("normals"),
         py::arg("scales"), py::arg("radii"), py::arg("rings"), py::arg("estimator"), py::arg("denoise"),
         py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"),
@@ -1131,14 +1292,16 @@ PYBIND11_MODULE(_native, m)
                      const std::vector<std::string>& radii, const std::vector<std::string>& rings,
                      const std::string& estimator, const std::string& denoise,
                      const std::string& denoise_neighbors, const std::string& extraction, int threads,
-                     py::object progress, std::optional<double> spacing, std::optional<double> noise) {
+                     py::object progress, std::optional<double> spacing, std::optional<double> noise,
+                     std::size_t scales) {
            const Job_options o =
              read_job_options({"auto"}, radii, rings, estimator, denoise, denoise_neighbors, extraction);
-           return std::make_unique<Job>(points, normals, o, threads, spacing, noise, Checkpoint(std::move(progress)));
+           return std::make_unique<Job>(points, normals, o, threads, spacing, noise, Checkpoint(std::move(progress)),
+                                        scales);
          }),
          py::arg("points"), py::arg("normals"), py::arg("radii"), py::arg("rings"), py::arg("estimator"),
          py::arg("denoise"), py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"),
-         py::arg("progress"), py::arg("spacing"), py::arg("noise"))
+         py::arg("progress"), py::arg("spacing"), py::arg("noise"), py::arg("scales") = 1)
     .def("closing_values", &Job::closing_values)
     .def("result", [](Job& job, const std::vector<std::string>& scales, py::object progress) {
            return job.result(read_job_options(scales, {"auto"}, {}, "quadric", "auto", "", "front").scales,
@@ -1163,6 +1326,9 @@ PYBIND11_MODULE(_native, m)
   m.def("denoise", &denoise);
   py::class_<Shape_handle>(m, "Shape")
     .def(py::init<const Doubles&, const std::optional<Doubles>&>())
+    .def("number_of_input_points", &Shape_handle::number_of_input_points)
+    .def("dimension", &Shape_handle::dimension)
+    .def("local_feature_sizes", &Shape_handle::local_feature_sizes)
     .def("spectrum", &Shape_handle::spectrum)
     .def("alpha_at_quantile", &Shape_handle::alpha_at_quantile)
     .def("suggest_scale", &Shape_handle::suggest_scale)

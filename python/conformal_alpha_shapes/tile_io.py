@@ -8,16 +8,18 @@ and read in slices, ``.xyz`` is parsed a chunk of lines at a time, LAS is read
 a range of records at a time by the program's reader (with the LiDAR
 filters), and the merged LAS is written a chunk at a time. Every file
 is written beside its final name and renamed into place (``os.replace``), so
-a file under its final name is always complete.
+a file under its final name is always complete, with the mode of any new
+file (``output_files``).
 """
 
 import hashlib
 import json
 import math
 import os
-import tempfile
 
 import numpy as np
+
+from . import output_files
 
 __all__ = [
     "InputError",
@@ -298,17 +300,9 @@ def open_cloud(path, las_filter=None):
 
 
 def atomic_write(path, write):
-    """Calls ``write(temporary_path)`` and renames the file to ``path``: never half written."""
-    folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".part", dir=folder)
-    os.close(handle)
-    try:
-        write(temporary)
-        os.replace(temporary, path)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
-        raise
+    """Calls ``write(temporary_path)`` and renames the file to ``path``: never half written
+    (``output_files.atomic_write``: the mode of any new file, errors naming ``path``)."""
+    output_files.atomic_write(path, write)
 
 
 _LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",

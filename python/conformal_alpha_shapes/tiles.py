@@ -226,6 +226,8 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
 
     Raises:
         tile_io.InputError: bad input (file and line), before any file is written.
+        TileError: fewer than 25 points (before any file is written), or
+            points whose sample spacing cannot be estimated.
         ValueError, TypeError: bad options, as ``multiscale_curvatures``.
     """
     options = {"scales": [str(x) for x in ((scales,) if isinstance(scales, (str, float, int)) else scales)],
@@ -245,6 +247,9 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
                         "tls_client_cert=..., tls_client_key=...)")
     input = os.fspath(input)
     cloud = tile_io.open_cloud(input, las_filter)
+    if cloud.count < 25:
+        raise TileError(f"{input}: {cloud.count} points; a tiled run needs at least 25: the sample spacing, which "
+                        "sets the tiles' halos and radii, is estimated from each point's 24 nearest neighbors")
     started = time.monotonic()
     os.makedirs(os.path.join(output, "tiles"), exist_ok=True)
     os.makedirs(os.path.join(output, "parts"), exist_ok=True)
@@ -332,8 +337,8 @@ def _sample_halo(sample, stride, options):
     """The halo's width as the partition foresees it: the rule's width in the
     spacing of the points, from the sample's spacing (every ``stride``-th
     point of a surface: ``sqrt(stride)`` times the points')."""
-    from . import estimate_noise
-    spacing = estimate_noise(sample).spacing / math.sqrt(stride)
+    from . import _unchecked_noise_estimate
+    spacing = _unchecked_noise_estimate(sample).spacing / math.sqrt(stride)
     return _halo(options, spacing) * spacing
 
 
@@ -348,7 +353,7 @@ def _global_noise(client, cloud, output, tiles, quiet):
     exact selection over the tiles), the sample of the points with the
     smallest order-free keys in that frame, and ``estimate_noise()`` on that
     sample with the neighbors of its fits, which it gives as on the whole cloud."""
-    from . import estimate_noise
+    from . import _unchecked_noise_estimate
     has_normals = cloud.has_normals
     kept, outliers = {}, []
 
@@ -381,7 +386,11 @@ def _global_noise(client, cloud, output, tiles, quiet):
     index = np.concatenate([f[0] for f in found])
     q = np.concatenate([f[1] for f in found])
     _, rows = np.unique(index, return_index=True)
-    estimate = estimate_noise(q[rows])
+    estimate = _unchecked_noise_estimate(q[rows])
+    if not estimate.spacing > 0:
+        raise TileError(f"{cloud.path}: {cloud.count} points; the sample spacing, which sets the tiles' halos and "
+                        "radii, is estimated from each point's 24 nearest neighbors and could not be: a tiled "
+                        "run needs at least 25 points, not all coincident or on a line")
     return {"spacing": float(np.ldexp(estimate.spacing, exponent)), "noise": float(estimate),
             "noise_24": estimate.noise_24, "outliers": len(outliers), "working_frame": [center, exponent]}
 

@@ -31,6 +31,14 @@ def test_bunny_ply_and_csv(tmp_path):
     points, normals = cas.read_point_cloud(bunny)
     assert normals is None
     r = check_same_bytes(tmp_path, bunny, points, None)
+    # the program's file read back: its floats, which write the same bytes
+    read = cas.read_curvatures(tmp_path / "program" / "curvatures.ply")
+    assert read.layers == r.layers and np.array_equal(read.points, points)
+    assert np.array_equal(read["r4s"].H, r["r4s"].H.astype(np.float32).astype(np.float64), equal_nan=True)
+    (tmp_path / "again").mkdir()
+    read.write_ply(tmp_path / "again" / "curvatures.ply")
+    assert (tmp_path / "again" / "curvatures.ply").read_bytes() == \
+        (tmp_path / "program" / "curvatures.ply").read_bytes()
     program_output(bunny, tmp_path / "csv", "--csv")
     table = np.genfromtxt(tmp_path / "csv" / "curvatures.csv", delimiter=",", names=True, dtype=None,
                           encoding="ascii")

@@ -137,6 +137,29 @@ def test_the_merged_file_is_the_programs_format(scene_run):
     # the same fields; the descriptions differ only by the scale's value
     strip = lambda header: [line for line in header.split(b"\n") if not line.startswith(b"comment layer")]
     assert strip(mine_header) == strip(their_header)
+    # read back into a Result, which writes the same bytes
+    merged = cas.read_curvatures(folder / "out" / "curvatures.ply")
+    assert merged.layers == one.layers and np.array_equal(merged.points, one.points)
+    merged.write_ply(folder / "again.ply")
+    assert (folder / "again.ply").read_bytes() == (folder / "out" / "curvatures.ply").read_bytes()
+
+
+def test_the_files_have_a_new_files_mode(scene_run):
+    """Parts, manifest, summary and merged file: 0666 less the umask (the run's and its workers')."""
+    folder = scene_run[4] / "out"
+    umask = os.umask(0)
+    os.umask(umask)
+    files = [os.path.join(root, name) for root, _, names in os.walk(folder) for name in names]
+    assert any(path.endswith("curvatures.ply") for path in files) and any("part" in path for path in files)
+    for path in files:
+        assert os.stat(path).st_mode & 0o777 == 0o666 & ~umask, path
+
+
+def test_a_dask_task_receives_a_shape(client):
+    points, _ = fibonacci_sphere(500)
+    shape = cas.ConformalAlphaShape(points)
+    spectrum, count = client.submit(lambda s: (s.spectrum(), len(s)), shape, pure=False).result()
+    assert np.array_equal(spectrum, shape.spectrum()) and count == 500
 
 
 def test_seams_agree_and_closed_parts_point_outward(scene_run):
@@ -379,6 +402,9 @@ def test_bad_input_fails_before_any_file_is_written(tmp_path):
         tiles.process_tiles(nan, tmp_path / "out", workers=1)
     good = tmp_path / "good.xyz"
     good.write_text("0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+    with pytest.raises(tiles.TileError, match=r"good.xyz: 4 points; a tiled run needs at least 25: .* 24 nearest"):
+        tiles.process_tiles(good, tmp_path / "out", workers=1)
+    assert not (tmp_path / "out").exists()
     with pytest.raises(tiles.TileError, match=r"scheduler: tls://127.0.0.1:1 needs security="):
         tiles.process_tiles(good, tmp_path / "out", scheduler="tls://127.0.0.1:1")
     run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(good), "--output",
