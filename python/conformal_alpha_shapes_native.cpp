@@ -3,7 +3,7 @@
 // shapes and types are checked by the Python half (conformal_alpha_shapes/
 // __init__.py) and again here, so that this module never crashes on what a
 // caller passes. The GIL is released while the library computes, which
-// stops on Ctrl-C (without_gil) and reports its progress between steps.
+// stops on Ctrl-C (without_gil) and reports its progress (Checkpoint).
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
@@ -23,12 +23,17 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <limits>
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -86,21 +91,119 @@ private:
 #endif
 };
 
+// The caller's progress(stage, fraction) over the steps of a computation,
+// and Ctrl-C. Each step spans a share of [0, 1] in proportion to the time it
+// is expected to take (Step_costs). At a step's start the fraction is the end
+// of the step before; inside it, the library's interruption checks (every
+// 20 ms or so of its work, see without_gil) move it on with the time spent
+// against the time expected, slowing down near the step's end, which it
+// reaches only when the step ends. The callable is called at each step's
+// start and at most every 0.1 s inside; the fractions never decrease, and
+// the last call is ("done", 1.0).
+class Checkpoint
+{
+  typedef std::chrono::steady_clock Clock;
+  struct State
+  {
+    py::object progress;
+    std::string stage;
+    double begin = 0, end = 0, expected_seconds = 1, reported = -1;
+    Clock::time_point started = Clock::now(), last_call = Clock::now();
+  };
+
+public:
+  explicit Checkpoint(py::object progress = py::none()) : m_state(std::make_shared<State>())
+  {
+    m_state->progress = std::move(progress);
+  }
+
+  // With the GIL released: enters the step `stage`, which ends at fraction
+  // `end` and is expected to take `seconds`; raises KeyboardInterrupt on Ctrl-C.
+  void step(const std::string& stage, double end, double seconds) const
+  {
+    py::gil_scoped_acquire gil;
+    if(PyErr_CheckSignals() != 0)
+      throw py::error_already_set();
+    State& s = *m_state;
+    s.begin = (std::max)(s.end, 0.0);
+    s.end = (std::min)((std::max)(end, s.begin), 1.0);
+    s.stage = stage;
+    s.expected_seconds = (std::max)(seconds, 1e-3);
+    s.started = Clock::now();
+    report(s.begin, true);
+  }
+
+  // With the GIL held: the fraction moved on by the time spent in the step.
+  void tick() const
+  {
+    State& s = *m_state;
+    if(s.progress.is_none() || Clock::now() - s.last_call < std::chrono::milliseconds(100))
+      return;
+    const double x = seconds_in_step() / s.expected_seconds;
+    // linear up to 0.8 of the step, then approaching its end
+    const double g = x <= 0.8 ? x : 0.8 + 0.2 * (1 - std::exp(-(x - 0.8) / 0.2));
+    report(s.begin + (s.end - s.begin) * g, false);
+  }
+
+  // With the GIL released: the last call, ("done", 1.0).
+  void finish() const
+  {
+    py::gil_scoped_acquire gil;
+    m_state->stage = "done";
+    m_state->end = 1.0;
+    report(1.0, true);
+  }
+
+  double seconds_in_step() const
+  {
+    return std::chrono::duration<double>(Clock::now() - m_state->started).count();
+  }
+  // the fraction the current step ends at
+  double end_of_step() const { return m_state->end; }
+
+private:
+  void report(double fraction, bool always) const
+  {
+    State& s = *m_state;
+    fraction = (std::max)(fraction, s.reported);
+    if(s.progress.is_none() || (!always && fraction <= s.reported))
+      return;
+    s.progress(s.stage, fraction);
+    s.reported = fraction;
+    s.last_call = Clock::now();
+  }
+
+  std::shared_ptr<State> m_state;
+};
+
 // Runs `work()` with the GIL released, and stops it on Ctrl-C: the
 // library's loops call the check below every 20 ms or so on this thread
 // (interruption.h); it takes the GIL, and when Python has a signal's
 // exception (KeyboardInterrupt) asks the library to stop, which unwinds
 // `work()` with Interrupted, turned back into the Python exception here.
+// With a `checkpoint`, the same checks move its progress on; an exception of
+// the progress callable stops the work the same way.
 template <class Work>
-auto without_gil(Work work)
+auto without_gil(Work work, const Checkpoint* checkpoint = nullptr)
 {
   std::unique_ptr<py::error_already_set> pending;
-  const CAS3::Scoped_interruption_check check([&pending] {
+  const CAS3::Scoped_interruption_check check([&pending, checkpoint] {
     py::gil_scoped_acquire gil;
-    if(PyErr_CheckSignals() == 0)
-      return false;
-    pending = std::make_unique<py::error_already_set>();
-    return true;
+    if(PyErr_CheckSignals() != 0)
+    {
+      pending = std::make_unique<py::error_already_set>();
+      return true;
+    }
+    if(checkpoint)
+    {
+      try { checkpoint->tick(); }
+      catch(py::error_already_set& e)
+      {
+        pending = std::make_unique<py::error_already_set>(std::move(e));
+        return true;
+      }
+    }
+    return false;
   });
   try
   {
@@ -119,27 +222,6 @@ auto without_gil(Work work)
     throw;
   }
 }
-
-// Called by the computation, with the GIL released, between its steps: takes
-// the GIL, raises KeyboardInterrupt (as a C++ exception that unwinds the
-// computation) when Ctrl-C was pressed, and calls the caller's progress
-// function.
-class Checkpoint
-{
-public:
-  explicit Checkpoint(py::object progress) : m_progress(std::move(progress)) {}
-  void operator()(const std::string& stage, double fraction) const
-  {
-    py::gil_scoped_acquire gil;
-    if(PyErr_CheckSignals() != 0)
-      throw py::error_already_set();
-    if(!m_progress.is_none())
-      m_progress(stage, fraction);
-  }
-
-private:
-  py::object m_progress;
-};
 
 template <class T>
 py::array_t<T> new_array(std::size_t n)
@@ -268,6 +350,33 @@ Job_options read_job_options(const std::vector<std::string>& scales, const std::
   catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
 }
 
+// The time the steps of a job take, relative to each other, per point: the
+// Delaunay triangulation, poles and conformal values with the input checks,
+// the noise estimate and the smoothing (about half of it with the noisy
+// scans that are smoothed); the advancing front with the first surface cut
+// from it, a later surface; the curvature of a surface, its transfer to the
+// points and the arrays, per neighborhood (the automatic one fits up to 22.6
+// spacings). Measured on 100k to 300k point ellipsoids, clean and noisy, on
+// two cores; a step's share of the bar follows its share of the time.
+struct Step_costs
+{
+  static double shape(CAS3::Denoising denoising)
+  {
+    return denoising == CAS3::ALWAYS_DENOISE ? 1.6 : denoising == CAS3::NEVER_DENOISE ? 1.0 : 1.3;
+  }
+  static constexpr double front_and_surface = 1.1;
+  static constexpr double surface = 0.2;
+  static double curvature(const std::vector<CAS3::Neighborhood>& neighborhoods)
+  {
+    double cost = 0.1;
+    for(const CAS3::Neighborhood& n : neighborhoods)
+      cost += n.kind() == CAS3::Neighborhood::AUTOMATIC ? 1.2 : n.kind() == CAS3::Neighborhood::RINGS ? 0.3 : 0.35;
+    return cost;
+  }
+  // seconds per point of a cost of 1 before any step was timed (two cores)
+  static constexpr double seconds_per_point = 1.5e-5;
+};
+
 // The program's job (conformal_curvature.cpp) without its files, split at
 // its shape: the analysis is built once (with the decisions of a larger run
 // when given), then gives its closing values or, per scale, its surface and
@@ -277,9 +386,12 @@ Job_options read_job_options(const std::vector<std::string>& scales, const std::
 class Job
 {
 public:
+  // `scales`: the number of scales the job's result() will have, or 0 when
+  // only its closing values will be asked for (the shares of the progress)
   Job(const Doubles& points_array, const std::optional<Doubles>& normals_array, const Job_options& o, int threads,
-      std::optional<double> given_spacing, std::optional<double> given_noise, const Checkpoint& checkpoint)
-    : m_options(o), m_threads(threads)
+      std::optional<double> given_spacing, std::optional<double> given_noise, const Checkpoint& checkpoint,
+      std::size_t scales)
+    : m_options(o), m_threads(threads), m_checkpoint(checkpoint)
   {
     const std::vector<Point> points = to_triples<Point>(points_array, "points");
     std::vector<Vector> normals;
@@ -292,8 +404,11 @@ public:
                               " points");
     }
     const Thread_cap cap(m_threads);
+    m_shape_cost = Step_costs::shape(o.denoising);
+    const double total = m_shape_cost + (scales == 0 ? Step_costs::front_and_surface : rest_cost(scales));
     without_gil([&] {
-      checkpoint("conformal alpha shape", 0.0);
+      checkpoint.step("conformal alpha shape", m_shape_cost / total,
+                      double(points.size()) * Step_costs::seconds_per_point * m_shape_cost);
       const auto np = CAS3::parameters::reference_normals(std::cref(normals),
         CAS3::parameters::denoising(o.denoising, CAS3::parameters::surface_extraction(o.extraction)));
       auto analyze = [&](const auto& with_noise) {
@@ -307,7 +422,8 @@ public:
                                      CAS3::Noise_estimate{*given_spacing, *given_noise, *given_noise}, np))
                                  : analyze(np);
       return 0;
-    });
+    }, &checkpoint);
+    m_seconds_per_cost = checkpoint.seconds_in_step() / m_shape_cost;
   }
 
   // Per input point, the closing value of the front (NaN off it): a tile's
@@ -315,7 +431,12 @@ public:
   py::array_t<double> closing_values() const
   {
     const Thread_cap cap(m_threads);
-    const std::vector<double> closing = without_gil([&] { return analysis().closing_values(); });
+    const std::vector<double> closing = without_gil([&] {
+      m_checkpoint.step("front", 1.0, m_seconds_per_cost * Step_costs::front_and_surface);
+      std::vector<double> values = analysis().closing_values();
+      m_checkpoint.finish();
+      return values;
+    }, &m_checkpoint);
     py::array_t<double> values = new_array<double>(closing.size());
     std::copy(closing.begin(), closing.end(), values.mutable_data());
     return values;
@@ -330,19 +451,33 @@ public:
     Analysis& analysis = *m_analysis;
     const Job_options& o = m_options;
     const Thread_cap cap(m_threads);
-    const std::size_t steps = 1 + scales.size() * (1 + o.neighborhoods.size());
-    std::size_t done = 1;  // the shape
-    auto step = [&](const std::string& stage) { checkpoint(stage, double(done++) / double(steps)); };
+    // the shares of the steps, the shape's done
+    const double total = m_shape_cost + rest_cost(scales.size());
+    double done = m_shape_cost;
+    auto step = [&](const std::string& stage, double cost) {
+      done += cost;
+      checkpoint.step(stage, done / total, m_seconds_per_cost * cost);
+    };
+    for(const CAS3::Neighborhood& n : o.neighborhoods)
+      if(n.kind() == CAS3::Neighborhood::SPACINGS || n.kind() == CAS3::Neighborhood::AUTOMATIC)
+        if(!(analysis.noise().spacing > 0))
+          throw py::value_error(
+            "multiscale_curvatures: radii in sample spacings ('auto', '4s') need the sample spacing, estimated "
+            "from each point's 24 nearest neighbors, but it could not be estimated on these " +
+            std::to_string(analysis.number_of_input_points()) +
+            " points (at least 25 are needed, not all coincident or on a line); give the radii as lengths "
+            "(radii=[0.1]) or rings (rings=[1]), or spacing= and noise=");
     py::list layers;
     without_gil([&] {
       for(const CAS3::Scale& scale : scales)
       {
-        step("surface at scale " + cas3::scale_text(scale));
+        step("surface at scale " + cas3::scale_text(scale),
+             &scale == &scales.front() ? Step_costs::front_and_surface : Step_costs::surface);
         const double a = analysis.scale_value(scale);
         Surface surface;
         const CAS3::Surface_report report = analysis.surface(a, surface);
         cas3::return_freed_memory();  // as the program does: the front's copy was freed mid-heap
-        step("curvature at scale " + cas3::scale_text(scale));
+        step("curvature at scale " + cas3::scale_text(scale), Step_costs::curvature(o.neighborhoods));
         // each layer becomes its arrays as soon as it is made: the point
         // layers' values are never all held at once
         auto layer_done = [&](std::size_t r, std::vector<CAS3::Point_curvature<K> >&& values) {
@@ -355,18 +490,17 @@ public:
             layer["description"] = cas3::layer_description(analysis, a, scale, o.neighborhoods[r], label);
             layer["surface"] = report_dict(report);
             layers.append(layer);
+            checkpoint.tick();
           }
-          if(r + 1 < o.neighborhoods.size())
-            step("curvature at scale " + cas3::scale_text(scale));
         };
         if(&scale == &scales.back())
           std::move(analysis).estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
         else
           analysis.estimate_curvatures(surface, o.neighborhoods, o.estimator, layer_done);
       }
-      checkpoint("done", 1.0);
+      checkpoint.finish();
       return 0;
-    });
+    }, &checkpoint);
     const std::size_t n = analysis.number_of_input_points();
     py::array_t<bool> outlier = new_array<bool>(n);
     for(std::size_t i = 0; i < n; ++i)
@@ -394,6 +528,13 @@ public:
   }
 
 private:
+  // the cost of the steps after the shape, for `scales` scales
+  double rest_cost(std::size_t scales) const
+  {
+    const double per_scale = Step_costs::surface + Step_costs::curvature(m_options.neighborhoods);
+    return Step_costs::front_and_surface - Step_costs::surface + double((std::max)(scales, std::size_t(1))) * per_scale;
+  }
+
   const Analysis& analysis() const
   {
     if(!m_analysis)
@@ -403,6 +544,8 @@ private:
 
   Job_options m_options;
   int m_threads;
+  Checkpoint m_checkpoint;  // the progress of the shape and of closing_values()
+  double m_shape_cost = 1, m_seconds_per_cost = 1;
   std::unique_ptr<Analysis> m_analysis;
 };
 
@@ -417,21 +560,14 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
   const Job_options o =
     read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
   const Checkpoint checkpoint(std::move(progress));
-  Job job(points_array, normals_array, o, threads, given_spacing, given_noise, checkpoint);
+  Job job(points_array, normals_array, o, threads, given_spacing, given_noise, checkpoint, o.scales.size());
   return job.result(o.scales, checkpoint);
 }
 
-// Writes the program's curvatures.ply from the arrays of a result: the same
-// bytes, since the values are turned into floats as the program does.
-void write_point_cloud(const std::string& path, const Doubles& points_array, const py::array_t<bool>& outlier,
-                       const py::list& layers)
+// The layers of a result (a list of the dicts of its Layer objects) as the
+// program holds them: floats, in the order of cas3::Layer::value_names().
+std::vector<cas3::Layer> layers_from_python(const py::list& layers, std::size_t n, const std::string& what)
 {
-  const std::vector<Point> points = to_triples<Point>(points_array, "points");
-  if(std::size_t(outlier.size()) != points.size())
-    throw py::value_error("write_ply: one outlier flag per point");
-  std::vector<bool> is_outlier(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    is_outlier[i] = outlier.at(py::ssize_t(i));
   std::vector<cas3::Layer> out;
   for(py::handle h : layers)
   {
@@ -439,7 +575,6 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     cas3::Layer layer;
     layer.label = d["name"].cast<std::string>();
     layer.description = d["description"].cast<std::string>();
-    const std::size_t n = points.size();
     layer.values.resize(n * cas3::Layer::number_of_values);
     layer.source.resize(n);
     // the columns in the file's order (cas3::Layer::value_names())
@@ -451,7 +586,7 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     {
       const Doubles a = d[triples[t]].cast<Doubles>();
       if(check_rows(a, triples[t]) != n)
-        throw py::value_error(std::string("write_ply: ") + triples[t] + " has not one row per point");
+        throw py::value_error(what + ": " + triples[t] + " has not one row per point");
       for(std::size_t i = 0; i < n; ++i)
         for(int j = 0; j < 3; ++j)
           layer.values[i * cas3::Layer::number_of_values + std::size_t(triple_column[t] + j)] =
@@ -461,17 +596,38 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     {
       const Doubles a = d[scalars[s]].cast<Doubles>();
       if(std::size_t(a.size()) != n)
-        throw py::value_error(std::string("write_ply: ") + scalars[s] + " has not one value per point");
+        throw py::value_error(what + ": " + scalars[s] + " has not one value per point");
       for(std::size_t i = 0; i < n; ++i)
         layer.values[i * cas3::Layer::number_of_values + std::size_t(scalar_column[s])] = float(a.data()[i]);
     }
     const py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> source =
       d["source"].cast<py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> >();
     if(std::size_t(source.size()) != n)
-      throw py::value_error("write_ply: source has not one value per point");
+      throw py::value_error(what + ": source has not one value per point");
     std::copy(source.data(), source.data() + n, layer.source.begin());
     out.push_back(std::move(layer));
   }
+  return out;
+}
+
+std::vector<bool> outlier_flags(const py::array_t<bool>& outlier, std::size_t n, const std::string& what)
+{
+  if(std::size_t(outlier.size()) != n)
+    throw py::value_error(what + ": one outlier flag per point");
+  std::vector<bool> is_outlier(n);
+  for(std::size_t i = 0; i < n; ++i)
+    is_outlier[i] = outlier.at(py::ssize_t(i));
+  return is_outlier;
+}
+
+// Writes the program's curvatures.ply from the arrays of a result: the same
+// bytes, since the values are turned into floats as the program does.
+void write_point_cloud(const std::string& path, const Doubles& points_array, const py::array_t<bool>& outlier,
+                       const py::list& layers)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  const std::vector<bool> is_outlier = outlier_flags(outlier, points.size(), "write_ply");
+  const std::vector<cas3::Layer> out = layers_from_python(layers, points.size(), "write_ply");
   py::gil_scoped_release release;
   std::ofstream file(path, std::ios::binary);
   if(!file)
@@ -482,24 +638,376 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
     throw std::runtime_error("write_ply: cannot write " + path);
 }
 
-// The program's reader: .xyz, .pwn, .ply, .off, .obj.
-py::tuple read_point_cloud(const std::string& path)
+// ---- LAS: the records' fields as numpy arrays, and back
+
+// The fields of `records` as a dict of (N,) arrays.
+py::dict las_fields_dict(const std::vector<cas3::Las_record>& records)
 {
+  const std::size_t n = records.size();
+  auto X = new_array<std::int32_t>(n), Y = new_array<std::int32_t>(n), Z = new_array<std::int32_t>(n);
+  auto intensity = new_array<std::uint16_t>(n), point_source_id = new_array<std::uint16_t>(n);
+  auto return_number = new_array<std::uint8_t>(n), number_of_returns = new_array<std::uint8_t>(n);
+  auto classification = new_array<std::uint8_t>(n), user_data = new_array<std::uint8_t>(n);
+  auto scanner_channel = new_array<std::uint8_t>(n), scan_direction = new_array<std::uint8_t>(n);
+  auto edge = new_array<std::uint8_t>(n);
+  auto synthetic = new_array<bool>(n), key_point = new_array<bool>(n), withheld = new_array<bool>(n),
+       overlap = new_array<bool>(n);
+  auto scan_angle = new_array<std::int16_t>(n);
+  auto gps_time = new_array<double>(n);
+  auto red = new_array<std::uint16_t>(n), green = new_array<std::uint16_t>(n), blue = new_array<std::uint16_t>(n),
+       nir = new_array<std::uint16_t>(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const cas3::Las_record& r = records[i];
+    const py::ssize_t k = py::ssize_t(i);
+    X.mutable_at(k) = r.X;
+    Y.mutable_at(k) = r.Y;
+    Z.mutable_at(k) = r.Z;
+    intensity.mutable_at(k) = r.intensity;
+    return_number.mutable_at(k) = r.return_number;
+    number_of_returns.mutable_at(k) = r.number_of_returns;
+    classification.mutable_at(k) = r.classification;
+    synthetic.mutable_at(k) = (r.flags & cas3::Las_record::SYNTHETIC) != 0;
+    key_point.mutable_at(k) = (r.flags & cas3::Las_record::KEY_POINT) != 0;
+    withheld.mutable_at(k) = (r.flags & cas3::Las_record::WITHHELD) != 0;
+    overlap.mutable_at(k) = (r.flags & cas3::Las_record::OVERLAP) != 0;
+    scanner_channel.mutable_at(k) = r.scanner_channel;
+    scan_direction.mutable_at(k) = r.scan_direction;
+    edge.mutable_at(k) = r.edge_of_flight_line;
+    user_data.mutable_at(k) = r.user_data;
+    scan_angle.mutable_at(k) = r.scan_angle;
+    point_source_id.mutable_at(k) = r.point_source_id;
+    gps_time.mutable_at(k) = r.gps_time;
+    red.mutable_at(k) = r.red;
+    green.mutable_at(k) = r.green;
+    blue.mutable_at(k) = r.blue;
+    nir.mutable_at(k) = r.nir;
+  }
+  py::dict d;
+  d["X"] = X; d["Y"] = Y; d["Z"] = Z;
+  d["intensity"] = intensity;
+  d["return_number"] = return_number;
+  d["number_of_returns"] = number_of_returns;
+  d["classification"] = classification;
+  d["synthetic"] = synthetic;
+  d["key_point"] = key_point;
+  d["withheld"] = withheld;
+  d["overlap"] = overlap;
+  d["scanner_channel"] = scanner_channel;
+  d["scan_direction"] = scan_direction;
+  d["edge_of_flight_line"] = edge;
+  d["user_data"] = user_data;
+  d["scan_angle"] = scan_angle;
+  d["point_source_id"] = point_source_id;
+  d["gps_time"] = gps_time;
+  d["red"] = red; d["green"] = green; d["blue"] = blue; d["nir"] = nir;
+  return d;
+}
+
+template <class T>
+py::array_t<T, py::array::c_style | py::array::forcecast> field(const py::dict& fields, const char* name,
+                                                                std::size_t n)
+{
+  if(!fields.contains(name))
+    throw py::value_error(std::string("write_las: the LAS fields have no '") + name + "'");
+  auto a = fields[name].cast<py::array_t<T, py::array::c_style | py::array::forcecast> >();
+  if(a.ndim() != 1 || std::size_t(a.size()) != n)
+    throw py::value_error(std::string("write_las: the LAS field '") + name + "' has not one value per point");
+  return a;
+}
+
+// The records of the fields of las_fields_dict().
+std::vector<cas3::Las_record> las_records_of(const py::dict& fields, std::size_t n)
+{
+  std::vector<cas3::Las_record> records(n);
+  auto X = field<std::int32_t>(fields, "X", n), Y = field<std::int32_t>(fields, "Y", n),
+       Z = field<std::int32_t>(fields, "Z", n);
+  auto intensity = field<std::uint16_t>(fields, "intensity", n);
+  auto return_number = field<std::uint8_t>(fields, "return_number", n);
+  auto number_of_returns = field<std::uint8_t>(fields, "number_of_returns", n);
+  auto classification = field<std::uint8_t>(fields, "classification", n);
+  auto synthetic = field<bool>(fields, "synthetic", n), key_point = field<bool>(fields, "key_point", n),
+       withheld = field<bool>(fields, "withheld", n), overlap = field<bool>(fields, "overlap", n);
+  auto scanner_channel = field<std::uint8_t>(fields, "scanner_channel", n);
+  auto scan_direction = field<std::uint8_t>(fields, "scan_direction", n);
+  auto edge = field<std::uint8_t>(fields, "edge_of_flight_line", n);
+  auto user_data = field<std::uint8_t>(fields, "user_data", n);
+  auto scan_angle = field<std::int16_t>(fields, "scan_angle", n);
+  auto point_source_id = field<std::uint16_t>(fields, "point_source_id", n);
+  auto gps_time = field<double>(fields, "gps_time", n);
+  auto red = field<std::uint16_t>(fields, "red", n), green = field<std::uint16_t>(fields, "green", n),
+       blue = field<std::uint16_t>(fields, "blue", n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    cas3::Las_record& r = records[i];
+    r.X = X.data()[i];
+    r.Y = Y.data()[i];
+    r.Z = Z.data()[i];
+    r.intensity = intensity.data()[i];
+    r.return_number = return_number.data()[i];
+    r.number_of_returns = number_of_returns.data()[i];
+    r.classification = classification.data()[i];
+    r.flags = std::uint8_t((synthetic.data()[i] ? 1 : 0) | (key_point.data()[i] ? 2 : 0) | (withheld.data()[i] ? 4 : 0)
+                           | (overlap.data()[i] ? 8 : 0));
+    r.scanner_channel = scanner_channel.data()[i];
+    r.scan_direction = scan_direction.data()[i];
+    r.edge_of_flight_line = edge.data()[i];
+    r.user_data = user_data.data()[i];
+    r.scan_angle = scan_angle.data()[i];
+    r.point_source_id = point_source_id.data()[i];
+    r.gps_time = gps_time.data()[i];
+    r.red = red.data()[i];
+    r.green = green.data()[i];
+    r.blue = blue.data()[i];
+  }
+  return records;
+}
+
+cas3::Las_filter las_filter_of(const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns)
+{
+  cas3::Las_filter filter;
+  try
+  {
+    filter.classes = cas3::parse_las_classes("classes", classes);
+    filter.returns = cas3::parse_las_returns("returns", returns);
+  }
+  catch(const cas3::Option_error& e) { throw py::value_error(e.what()); }
+  filter.drop_withheld = drop_withheld;
+  return filter;
+}
+
+py::dict las_header_dict(const cas3::Las_header& h)
+{
+  py::dict d;
+  d["version"] = std::to_string(h.version_major) + "." + std::to_string(h.version_minor);
+  d["point_format"] = h.point_format;
+  d["number_of_points"] = h.number_of_points;
+  d["scale"] = py::make_tuple(h.scale[0], h.scale[1], h.scale[2]);
+  d["offset"] = py::make_tuple(h.offset[0], h.offset[1], h.offset[2]);
+  d["rgb"] = cas3::las_detail::has_rgb(h.point_format);
+  d["file_source_id"] = h.file_source_id;
+  d["global_encoding"] = h.global_encoding;
+  d["creation_day"] = h.creation_day;
+  d["creation_year"] = h.creation_year;
+  return d;
+}
+
+py::dict counts_dict(const cas3::Las_filter_counts& c)
+{
+  py::dict d;
+  d["read"] = c.read;
+  d["classes"] = c.classes;
+  d["withheld"] = c.withheld;
+  d["returns"] = c.returns;
+  return d;
+}
+
+py::array_t<double> points_array(const std::vector<Point>& points)
+{
+  py::array_t<double> out = new_triples(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    put_triple(out.mutable_data(), i, points[i] - CGAL::ORIGIN);
+  return out;
+}
+
+// The program's reader: .xyz, .pwn, .ply, .off, .obj, .las (with the
+// filters). A dict: points, normals (or None), and for LAS las (its
+// header), fields (las_fields_dict()), counts and summary.
+py::dict read_point_cloud(const std::string& path, const std::vector<std::string>& classes, bool drop_withheld,
+                          const std::string& returns)
+{
+  const cas3::Las_filter filter = las_filter_of(classes, drop_withheld, returns);
   cas3::Point_cloud cloud;
   {
     py::gil_scoped_release release;
-    try { cloud = cas3::read_point_cloud(path); }
+    try { cloud = cas3::read_point_cloud(path, filter); }
     catch(const cas3::Read_error& e) { throw std::invalid_argument(e.what()); }
   }
-  py::array_t<double> points = new_triples(cloud.points.size());
-  for(std::size_t i = 0; i < cloud.points.size(); ++i)
-    put_triple(points.mutable_data(), i, cloud.points[i] - CGAL::ORIGIN);
+  if(filter.active() && !cloud.las.present)
+    throw py::value_error(path + ": classes, drop_withheld and returns filter LAS input (.las)");
+  py::dict d;
+  d["points"] = points_array(cloud.points);
   if(cloud.normals.empty())
-    return py::make_tuple(points, py::none());
-  py::array_t<double> normals = new_triples(cloud.normals.size());
-  for(std::size_t i = 0; i < cloud.normals.size(); ++i)
-    put_triple(normals.mutable_data(), i, cloud.normals[i]);
-  return py::make_tuple(points, normals);
+    d["normals"] = py::none();
+  else
+  {
+    py::array_t<double> normals = new_triples(cloud.normals.size());
+    for(std::size_t i = 0; i < cloud.normals.size(); ++i)
+      put_triple(normals.mutable_data(), i, cloud.normals[i]);
+    d["normals"] = normals;
+  }
+  if(cloud.las.present)
+  {
+    d["las"] = las_header_dict(cloud.las.header);
+    d["fields"] = las_fields_dict(cloud.las.records);
+    d["counts"] = counts_dict(cloud.las.counts);
+    d["summary"] = cas3::las_input_summary(path, cloud.las.header, filter, cloud.las.counts);
+  }
+  return d;
+}
+
+// The records first to first + count - 1 of the LAS file `path` that the
+// filters keep, read without the rest: a dict of points, fields, counts
+// (of this range) and las (the header).
+py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint64_t count,
+                        const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns)
+{
+  const cas3::Las_filter filter = las_filter_of(classes, drop_withheld, returns);
+  const std::vector<bool> class_kept = cas3::las_classes_kept(filter);
+  cas3::Las_filter_counts counts;
+  std::vector<cas3::Las_record> records, kept;
+  std::vector<Point> points;
+  cas3::Las_header header;
+  {
+    py::gil_scoped_release release;
+    try
+    {
+      cas3::Las_file file(path);
+      header = file.header();
+      file.read(first, count, records);
+      for(std::size_t i = 0; i < records.size(); ++i)
+      {
+        if(!cas3::keep_las_record(records[i], filter, class_kept, counts))
+          continue;
+        const std::array<double, 3> p = file.position(records[i]);
+        if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+          throw cas3::Read_error(path + ": point " + std::to_string(first + i) + ": coordinate is NaN or infinite");
+        points.emplace_back(p[0], p[1], p[2]);
+        kept.push_back(records[i]);
+      }
+    }
+    catch(const cas3::Read_error& e) { throw std::invalid_argument(e.what()); }
+  }
+  py::dict d;
+  d["points"] = points_array(points);
+  d["fields"] = las_fields_dict(kept);
+  d["counts"] = counts_dict(counts);
+  d["las"] = las_header_dict(header);
+  return d;
+}
+
+// What write_las and the tiles' LAS writer share: the output header of
+// `info` (scale, offset, rgb and, from a LAS input, file_source_id,
+// global_encoding, creation_day, creation_year) and the layers' labels.
+cas3::Las_output_header las_output_header(const py::dict& info, const std::vector<std::string>& labels)
+{
+  cas3::Las_output_header h;
+  const auto scale = info["scale"].cast<std::vector<double> >(), offset = info["offset"].cast<std::vector<double> >();
+  if(scale.size() != 3 || offset.size() != 3)
+    throw py::value_error("write_las: scale and offset have three values");
+  for(int k = 0; k < 3; ++k)
+  {
+    if(!std::isfinite(scale[std::size_t(k)]) || scale[std::size_t(k)] == 0 || !std::isfinite(offset[std::size_t(k)]))
+      throw py::value_error("write_las: a scale that is not finite and nonzero, or an offset that is not finite");
+    h.scale[k] = scale[std::size_t(k)];
+    h.offset[k] = offset[std::size_t(k)];
+  }
+  h.rgb = info["rgb"].cast<bool>();
+  for(const char* key : {"file_source_id", "global_encoding", "creation_day", "creation_year"})
+    if(info.contains(key))
+    {
+      const std::uint16_t value = info[key].cast<std::uint16_t>();
+      const std::string k = key;
+      (k == "file_source_id" ? h.file_source_id : k == "global_encoding" ? h.global_encoding
+                                                 : k == "creation_day"   ? h.creation_day
+                                                                         : h.creation_year) = value;
+    }
+  try { h.extra = cas3::las_extra_fields(labels); }
+  catch(const std::invalid_argument& e) { throw py::value_error(e.what()); }
+  return h;
+}
+
+// The scale and offset of points that do not come from a LAS file, from
+// their bounds: ((sx, sy, sz), (ox, oy, oz)).
+py::tuple las_scale(const std::vector<double>& low, const std::vector<double>& high)
+{
+  if(low.size() != 3 || high.size() != 3)
+    throw py::value_error("las_scale: three lows and three highs");
+  cas3::Las_output_header h;
+  try { cas3::choose_las_scale(low.data(), high.data(), h); }
+  catch(const std::invalid_argument& e) { throw py::value_error(e.what()); }
+  return py::make_tuple(py::make_tuple(h.scale[0], h.scale[1], h.scale[2]),
+                        py::make_tuple(h.offset[0], h.offset[1], h.offset[2]));
+}
+
+// The point records of a LAS 1.4 file (format 6 or 7 and the extra bytes
+// of the layers) for the points, their outlier flags and the layers: the
+// LAS input's fields when `fields` is a dict (las_fields_dict()), else the
+// points written with the scale and offset of `info`. Returns (bytes,
+// stats) where stats holds the records' smallest and largest scaled
+// integers (min, max) and their counts by return (by_return), for
+// las_header().
+py::tuple las_records(const Doubles& points_array_in, const py::array_t<bool>& outlier, const py::list& layers,
+                      const py::object& fields, const py::dict& info)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array_in, "points");
+  const std::size_t n = points.size();
+  const std::vector<bool> is_outlier = outlier_flags(outlier, n, "write_las");
+  const std::vector<cas3::Layer> values = layers_from_python(layers, n, "write_las");
+  std::vector<std::string> labels;
+  for(const cas3::Layer& layer : values)
+    labels.push_back(layer.label);
+  cas3::Las_output_header h = las_output_header(info, labels);
+  std::vector<cas3::Las_record> records;
+  if(!fields.is_none())
+    records = las_records_of(fields.cast<py::dict>(), n);
+  else
+  {
+    records.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double xyz[3] = {points[i].x(), points[i].y(), points[i].z()};
+      for(int k = 0; k < 3; ++k)
+        if(!(std::abs((xyz[k] - h.offset[k]) / h.scale[k]) < 2147483647.0))
+          throw py::value_error("write_las: point " + std::to_string(i) + " is beyond the range of the scale and offset");
+      cas3::quantize_las(h, xyz, records[i]);
+      records[i].return_number = records[i].number_of_returns = 1;
+    }
+  }
+  std::ostringstream out;
+  {
+    py::gil_scoped_release release;
+    cas3::write_las_point_records(out, n, h, [&](std::size_t i) { return records[i]; }, is_outlier, values);
+  }
+  std::int64_t low[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, high[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+  std::vector<std::uint64_t> by_return(15, 0);
+  for(const cas3::Las_record& r : records)
+  {
+    const std::int32_t xyz[3] = {r.X, r.Y, r.Z};
+    for(int k = 0; k < 3; ++k)
+    {
+      low[k] = std::min<std::int64_t>(low[k], xyz[k]);
+      high[k] = std::max<std::int64_t>(high[k], xyz[k]);
+    }
+    if(r.return_number >= 1 && r.return_number <= 15)
+      ++by_return[r.return_number - 1u];
+  }
+  py::dict stats;
+  stats["min"] = py::make_tuple(low[0], low[1], low[2]);
+  stats["max"] = py::make_tuple(high[0], high[1], high[2]);
+  stats["by_return"] = by_return;
+  return py::make_tuple(py::bytes(out.str()), stats);
+}
+
+// The header and Extra Bytes VLR of a LAS 1.4 file of `count` records of
+// las_records() (info, labels), with the merged stats of its chunks.
+py::bytes las_header(const py::dict& info, const std::vector<std::string>& labels, std::uint64_t count,
+                     const std::vector<std::int64_t>& low, const std::vector<std::int64_t>& high,
+                     const std::vector<std::uint64_t>& by_return)
+{
+  cas3::Las_output_header h = las_output_header(info, labels);
+  if(low.size() != 3 || high.size() != 3 || by_return.size() != 15)
+    throw py::value_error("las_header: three lows, three highs, 15 counts by return");
+  h.number_of_points = count;
+  for(int k = 0; k < 3; ++k)
+  {
+    h.min[k] = count == 0 ? 0 : double(low[std::size_t(k)]) * h.scale[k] + h.offset[k];
+    h.max[k] = count == 0 ? 0 : double(high[std::size_t(k)]) * h.scale[k] + h.offset[k];
+    if(h.scale[k] < 0)
+      std::swap(h.min[k], h.max[k]);
+  }
+  std::copy(by_return.begin(), by_return.end(), h.points_by_return);
+  return py::bytes(cas3::las_header_bytes(h));
 }
 
 CAS3::Surface_extraction extraction_named(const std::string& name)
@@ -528,6 +1036,19 @@ public:
                                                                 CAS3::parameters::local_feature_sizes(scales))
                           : m_shape->make_conformal_alpha_shape(points.begin(), points.end());
     });
+  }
+
+  std::size_t number_of_input_points() const { return m_shape->number_of_input_points(); }
+  int dimension() const { return m_shape->dimension(); }
+
+  // per input point, the local feature size of its vertex
+  py::array_t<double> local_feature_sizes() const
+  {
+    const std::size_t n = m_shape->number_of_input_points();
+    py::array_t<double> values = new_array<double>(n);
+    for(std::size_t i = 0; i < n; ++i)
+      values.mutable_data()[i] = m_shape->local_feature_size(m_shape->input_vertex(i));
+    return values;
   }
 
   py::array_t<double> spectrum() const
@@ -565,6 +1086,9 @@ public:
 
   py::tuple surface(std::optional<double> a, const std::string& extraction) const
   {
+    if(a && !(*a >= 0))
+      throw py::value_error("surface: the scale a must be >= 0 (or None for the automatic scale), got " +
+                            std::to_string(*a));
     const CAS3::Surface_extraction method = extraction_named(extraction);
     Surface mesh;
     without_gil([&] {
@@ -736,8 +1260,13 @@ py::array_t<double> denoise(const Doubles& points_array, std::optional<int> neig
   if(neighbors && *neighbors < 7)
     throw py::value_error("denoise: neighbors must be >= 7, got " + std::to_string(*neighbors));
   without_gil([&] {
+    const CAS3::Noise_estimate noise = CAS3::estimate_noise(points);
+    if(!(noise.spacing > 0))
+      throw std::invalid_argument("denoise: the noise and the sample spacing, estimated from each point's 24 nearest "
+                                  "neighbors, could not be estimated on these " + std::to_string(points.size()) +
+                                  " points (at least 25 are needed, not all coincident or on a line)");
     const CAS3::Denoising_plan plan =
-      CAS3::denoising_plan(CAS3::estimate_noise(points), CAS3::ALWAYS_DENOISE, neighbors ? unsigned(*neighbors) : 0u);
+      CAS3::denoising_plan(noise, CAS3::ALWAYS_DENOISE, neighbors ? unsigned(*neighbors) : 0u);
     CAS3::denoise(points, plan);
     return plan.passes;
   });
@@ -752,6 +1281,7 @@ py::array_t<double> denoise(const Doubles& points_array, std::optional<int> neig
 PYBIND11_MODULE(_native, m)
 {
   m.doc() = "The compiled part of conformal_alpha_shapes; use the package, not this module.";
+  m.attr("__version__") = CGAL_CAS3_VERSION;
   m.def("multiscale_curvatures", &multiscale_curvatures, py::arg("points"), py::arg("normals"),
         py::arg("scales"), py::arg("radii"), py::arg("rings"), py::arg("estimator"), py::arg("denoise"),
         py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"),
@@ -762,14 +1292,16 @@ PYBIND11_MODULE(_native, m)
                      const std::vector<std::string>& radii, const std::vector<std::string>& rings,
                      const std::string& estimator, const std::string& denoise,
                      const std::string& denoise_neighbors, const std::string& extraction, int threads,
-                     py::object progress, std::optional<double> spacing, std::optional<double> noise) {
+                     py::object progress, std::optional<double> spacing, std::optional<double> noise,
+                     std::size_t scales) {
            const Job_options o =
              read_job_options({"auto"}, radii, rings, estimator, denoise, denoise_neighbors, extraction);
-           return std::make_unique<Job>(points, normals, o, threads, spacing, noise, Checkpoint(std::move(progress)));
+           return std::make_unique<Job>(points, normals, o, threads, spacing, noise, Checkpoint(std::move(progress)),
+                                        scales);
          }),
          py::arg("points"), py::arg("normals"), py::arg("radii"), py::arg("rings"), py::arg("estimator"),
          py::arg("denoise"), py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"),
-         py::arg("progress"), py::arg("spacing"), py::arg("noise"))
+         py::arg("progress"), py::arg("spacing"), py::arg("noise"), py::arg("scales") = 1)
     .def("closing_values", &Job::closing_values)
     .def("result", [](Job& job, const std::vector<std::string>& scales, py::object progress) {
            return job.result(read_job_options(scales, {"auto"}, {}, "quadric", "auto", "", "front").scales,
@@ -777,7 +1309,15 @@ PYBIND11_MODULE(_native, m)
          })
     .def("release", &Job::release);
   m.def("write_point_cloud", &write_point_cloud);
-  m.def("read_point_cloud", &read_point_cloud);
+  m.def("read_point_cloud", &read_point_cloud, py::arg("path"), py::arg("classes"), py::arg("drop_withheld"),
+        py::arg("returns"));
+  m.def("read_las_chunk", &read_las_chunk, py::arg("path"), py::arg("first"), py::arg("count"), py::arg("classes"),
+        py::arg("drop_withheld"), py::arg("returns"));
+  m.def("las_scale", &las_scale);
+  m.def("las_records", &las_records, py::arg("points"), py::arg("outlier"), py::arg("layers"), py::arg("fields"),
+        py::arg("info"));
+  m.def("las_header", &las_header, py::arg("info"), py::arg("labels"), py::arg("count"), py::arg("low"),
+        py::arg("high"), py::arg("by_return"));
   m.def("vertex_curvatures", &vertex_curvatures, py::arg("vertices"), py::arg("faces"), py::arg("rings"),
         py::arg("radius"), py::arg("estimator"));
   m.def("estimate_noise", &estimate_noise);
@@ -786,6 +1326,9 @@ PYBIND11_MODULE(_native, m)
   m.def("denoise", &denoise);
   py::class_<Shape_handle>(m, "Shape")
     .def(py::init<const Doubles&, const std::optional<Doubles>&>())
+    .def("number_of_input_points", &Shape_handle::number_of_input_points)
+    .def("dimension", &Shape_handle::dimension)
+    .def("local_feature_sizes", &Shape_handle::local_feature_sizes)
     .def("spectrum", &Shape_handle::spectrum)
     .def("alpha_at_quantile", &Shape_handle::alpha_at_quantile)
     .def("suggest_scale", &Shape_handle::suggest_scale)

@@ -1,7 +1,7 @@
 // conformal_curvature: multi-scale curvature of a point cloud, end to end.
 // Run with --help for the usage. Writes, into the output directory, a binary
-// PLY point cloud with every input point's values at every scale and
-// neighborhood, one binary PLY surface per scale with the same values per
+// PLY (or, with --las, LAS 1.4) point cloud with every input point's values
+// at every scale and neighborhood, one binary PLY surface per scale with the same values per
 // vertex, and on request a CSV with a row per input point per layer; prints
 // a summary table on stdout.
 //
@@ -76,8 +76,17 @@ std::unique_ptr<Analysis> analyze(const cas3::Curvature_options& o, const cas3::
 int run(const cas3::Curvature_options& o)
 {
   const Progress progress(o.quiet);
+  if(o.las)  // before any work: layer names too long for LAS fail first
+  {
+    std::vector<std::string> labels;
+    for(const CAS3::Scale& scale : o.scales)
+      for(const CAS3::Neighborhood& neighborhood : o.neighborhoods)
+        labels.push_back(cas3::layer_label(scale, neighborhood, o.scales.size() > 1));
+    try { cas3::las_extra_fields(labels); }
+    catch(const std::invalid_argument& e) { throw std::runtime_error(std::string("--las: ") + e.what()); }
+  }
   cas3::Output_transaction output(o.output);  // before any work: an unwritable folder fails first
-  const cas3::Point_cloud cloud = cas3::read_point_cloud(o.input);
+  const cas3::Point_cloud cloud = cas3::read_point_cloud(o.input, o.las_filter, o.las);
   const std::vector<Point>& points = cloud.points;
   progress("read " + std::to_string(points.size()) + " points");
   const std::unique_ptr<Analysis> analysis = analyze(o, cloud);
@@ -95,6 +104,8 @@ int run(const cas3::Curvature_options& o)
     csv << cas3::csv_header();
   }
   std::ostringstream summary;
+  if(cloud.las.present)
+    summary << cas3::las_input_summary(o.input, cloud.las.header, cloud.las.filter, cloud.las.counts) << "\n";
   summary << cas3::summary_head(o.input, *analysis);
   std::vector<cas3::Layer> layers;
   for(const CAS3::Scale& scale : o.scales)
@@ -134,9 +145,12 @@ int run(const cas3::Curvature_options& o)
                         layers.data() + layers.size());
     output.close(ply);
   }
-  std::ofstream cloud_ply = output.open("curvatures.ply", true);
-  cas3::write_point_cloud(cloud_ply, points, is_outlier, layers);
-  output.close(cloud_ply);
+  std::ofstream cloud_file = output.open(o.las ? "curvatures.las" : "curvatures.ply", true);
+  if(o.las)
+    cas3::write_point_cloud_las(cloud_file, points, cloud.las, is_outlier, layers);
+  else
+    cas3::write_point_cloud(cloud_file, points, is_outlier, layers);
+  output.close(cloud_file);
   if(o.csv)
     output.close(csv);
   output.commit();

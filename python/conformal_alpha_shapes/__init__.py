@@ -8,7 +8,10 @@ The package of the CGAL package Conformal_alpha_shapes_3, for numpy:
 - ``ConformalAlphaShape(points)``: the filtration, its spectrum, its scale
   suggestion and its surfaces as (vertices, faces) arrays.
 - ``vertex_curvatures(vertices, faces)``: curvature of a triangle mesh.
-- ``estimate_noise(points)``, ``denoise(points)``, ``read_point_cloud(path)``.
+- ``estimate_noise(points)``, ``denoise(points)``, ``read_point_cloud(path)``
+  (.xyz, .pwn, .ply, .off, .obj and LAS, with LiDAR filters); ``Result.write_ply``
+  and ``Result.write_las`` write the values per point.
+- ``read_curvatures(path)``: a ``curvatures.ply`` back into a ``Result``.
 - ``front_closing_values(points)``: the front's share of the automatic scale,
   per point, for tiled runs (``conformal_alpha_shapes.tiles``).
 
@@ -16,30 +19,49 @@ Arrays are numpy arrays: points are (N, 3), float64 (other real dtypes and
 non-contiguous arrays are converted). Lengths and curvatures are in the
 units of the points. The computations release the GIL, report their
 progress to an optional ``progress(stage, fraction)`` callable and stop
-with ``KeyboardInterrupt`` on Ctrl-C.
+with ``KeyboardInterrupt`` on Ctrl-C. The objects pickle (a
+``ConformalAlphaShape`` is rebuilt from its points), so that they travel to
+Dask's workers.
+
+Open3D, pandas and others, without depending on them::
+
+    points = np.asarray(pcd.points)                  # an open3d.geometry.PointCloud
+    r = cas.multiscale_curvatures(points, np.asarray(pcd.normals) if pcd.has_normals() else None)
+    pcd.normals = o3d.utility.Vector3dVector(r["r4s"].normal)
+    pcd.colors = o3d.utility.Vector3dVector(r["r4s"].colors("H"))
+    vertices, faces, _ = cas.ConformalAlphaShape(points).surface()
+    mesh = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(vertices), o3d.utility.Vector3iVector(faces))
+    r.to_dataframe("r4s")                            # pandas; r.to_structured("r4s") for numpy
 """
 
 import numbers
 import os
-import tempfile
 import warnings
 
 import numpy as np
 
-from . import _native
+from . import _native, curvature_file
+from .output_files import atomic_write
+
+__version__ = _native.__version__
 
 __all__ = [
     "ConformalAlphaShape",
     "Layer",
     "NoiseEstimate",
+    "PointCloud",
     "Result",
     "denoise",
     "estimate_noise",
     "front_closing_values",
     "multiscale_curvatures",
+    "read_curvatures",
     "read_point_cloud",
     "vertex_curvatures",
 ]
+
+# estimate_noise() fits a cubic to each sampled point's 24 nearest neighbors
+_NOISE_POINTS = 25
 
 
 def _real_array(values, name):
@@ -93,6 +115,54 @@ def _threads(threads):
     return int(threads)
 
 
+def _arrays_equal(a, b):
+    """Whether two arrays (or Nones) are the same to the bit: dtype, shape and bytes (NaN included)."""
+    if a is None or b is None:
+        return a is None and b is None
+    a, b = np.asarray(a), np.asarray(b)
+    return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+
+
+def _same_number(a, b):
+    """Equality of numbers, NaN equal to NaN (None only to None)."""
+    if a is None or b is None:
+        return a is None and b is None
+    return a == b or (a != a and b != b)
+
+
+def _points_text(n):
+    return f"{n} point" if n == 1 else f"{n} points"
+
+
+def _same_report(a, b):
+    """Equality of surface reports (dicts of numbers, NaN equal to NaN) or Nones."""
+    if a is None or b is None:
+        return a is None and b is None
+    return a.keys() == b.keys() and all(_same_number(a[key], b[key]) for key in a)
+
+
+def _check_shape_points(function, points):
+    if len(points) < 4:
+        raise ValueError(f"{function}: {_points_text(len(points))}; at least 4 that are not coplanar are needed "
+                         "(the shape is built on their 3D Delaunay triangulation)")
+
+
+def _check_noise_points(function, points):
+    if len(points) < _NOISE_POINTS:
+        raise ValueError(f"{function}: {_points_text(len(points))}; at least {_NOISE_POINTS} are needed (the noise and "
+                         f"the sample spacing are estimated from each point's {_NOISE_POINTS - 1} nearest neighbors)")
+
+
+def _check_scale(function, a):
+    """``a`` as a float, checked: a scale is a number >= 0 (infinity included)."""
+    if isinstance(a, bool) or not isinstance(a, numbers.Real):
+        raise TypeError(f"{function}: the scale a must be a number, got {a!r}")
+    a = float(a)
+    if not a >= 0:
+        raise ValueError(f"{function}: the scale a must be >= 0, got {a}")
+    return a
+
+
 class Layer:
     """The curvature of every point (or mesh vertex) for one scale and neighborhood.
 
@@ -139,9 +209,44 @@ class Layer:
         """The names of the layer's arrays."""
         return [key for key in self._arrays if getattr(self, key) is not None]
 
+    def __len__(self):
+        return len(self.H)
+
     def __repr__(self):
-        label = f" {self.name!r}, a = {self.a:g}" if self.name is not None else ""
+        label = f" {self.name!r}" if self.name is not None else ""
+        label += f", a = {self.a:g}" if self.a is not None else ""
         return f"<Layer{label}: {len(self.H)} values>"
+
+    def __eq__(self, other):
+        """The same name, scale, description and surface report, and arrays equal to the bit."""
+        if not isinstance(other, Layer):
+            return NotImplemented
+        return (self.name == other.name and _same_number(self.a, other.a) and self.description == other.description
+                and _same_report(self.surface, other.surface)
+                and all(_arrays_equal(getattr(self, key), getattr(other, key)) for key in self._arrays))
+
+    __hash__ = None
+
+    def colors(self, key="H", limit=None):
+        """An (N, 3) float64 array of RGB colors in [0, 1] by the values of ``key``, as the program
+        colors its surfaces: red where positive (convex for H), white at 0, blue where negative, grey
+        where undefined (NaN); saturated at ``limit``, by default the 95th percentile of the magnitudes.
+        For ``open3d.utility.Vector3dVector`` or a plot."""
+        values = self[key]
+        if values.ndim != 1:
+            raise ValueError(f"colors: {key} is not a value per point; give H, K, k1, k2, radius or distance")
+        finite = np.isfinite(values)
+        if limit is None:
+            magnitudes = np.sort(np.abs(values[finite]))
+            limit = magnitudes[len(magnitudes) * 95 // 100] if len(magnitudes) else 1.0
+        colors = np.full((len(values), 3), 128 / 255)
+        if not limit > 0:
+            return colors
+        t = np.clip(values[finite] / limit, -1.0, 1.0)
+        fade = np.round(255 * (1 - np.abs(t))) / 255
+        colors[finite] = np.where((t >= 0)[:, None], np.column_stack([np.ones_like(t), fade, fade]),
+                                  np.column_stack([fade, fade, np.ones_like(t)]))
+        return colors
 
 
 class Result:
@@ -150,6 +255,7 @@ class Result:
     Attributes:
         layers: the layer names, in the program's order (scale by scale,
             neighborhoods inside); ``r[name]`` is the ``Layer``.
+        points: (N, 3) float64, the input points (read-only).
         outlier: (N,) bool, the isolated far outliers, left off every surface
             (their values are NaN with source 2).
         spacing: the sample spacing, in units of the points ("4s" is four of them).
@@ -157,6 +263,11 @@ class Result:
         denoised: whether the points were smoothed before the shape was built.
         merged: how many points were equal to an earlier point: merged into
             it before any estimate, each copy has its point's values.
+        (spacing, noise, denoised and merged are None in a Result read from a
+        file that does not hold them: ``read_curvatures``.)
+
+    Two results are equal (``==``) when their points, outliers, decisions
+    and layers are the same to the bit.
     """
 
     def __init__(self, points, native):
@@ -167,7 +278,7 @@ class Result:
         self.spacing = native["spacing"]
         self.noise = native["noise"]
         self.denoised = native["denoised"]
-        self.merged = native["merged"]
+        self.merged = native.get("merged")
         for layer in self._layers.values():
             inconsistent = (layer.surface or {}).get("sheets_with_inconsistent_normals", 0)
             if inconsistent:
@@ -188,9 +299,26 @@ class Result:
     def __len__(self):
         return len(self.layers)
 
+    @property
+    def points(self):
+        points = self._points.view()
+        points.flags.writeable = False
+        return points
+
     def __repr__(self):
-        return (f"<Result: {len(self.outlier)} points, layers {', '.join(self.layers)}, "
-                f"spacing {self.spacing:g}, noise {self.noise:.3g}>")
+        decisions = "" if self.spacing is None else f", spacing {self.spacing:g}, noise {self.noise:.3g}"
+        return f"<Result: {len(self.outlier)} points, layers {', '.join(self.layers)}{decisions}>"
+
+    def __eq__(self, other):
+        if not isinstance(other, Result):
+            return NotImplemented
+        return (self.layers == other.layers and _arrays_equal(self._points, other._points)
+                and _arrays_equal(self.outlier, other.outlier) and _same_number(self.spacing, other.spacing)
+                and _same_number(self.noise, other.noise) and self.denoised == other.denoised
+                and self.merged == other.merged
+                and all(self[name] == other[name] for name in self.layers))
+
+    __hash__ = None
 
     def to_structured(self, name):
         """One layer as a numpy structured array, a record per point (PDAL's arrays).
@@ -217,31 +345,116 @@ class Result:
         out["outlier"] = self.outlier
         return out
 
-    def write_ply(self, path):
-        """Writes the program's ``curvatures.ply`` (the same bytes) to ``path``.
+    def write_las(self, path, cloud=None):
+        """Writes the values per point as LAS 1.4 to ``path`` (the program's ``--las``).
+
+        Point format 6, or 7 when ``cloud`` has colors; the curvature values
+        as extra bytes described by the Extra Bytes VLR (record 4 of
+        LASF_Spec) under the PLY's names (``outlier``, ``nx_L`` .. ``distance_L``
+        as float32, ``source_L``), which lidR, PDAL and CloudCompare read as
+        named attributes. ``cloud``: the ``PointCloud`` that
+        ``read_point_cloud`` gave for a LAS file, whose points these are:
+        its scaled integers, scale, offset and fields (classification,
+        returns, intensity, flags, GPS time, colors) are written as read.
+        Without it the points are written with a power-of-ten scale that
+        holds their range (at most half a step from each coordinate). The
+        file is written beside ``path`` and renamed into place.
+        """
+        if cloud is not None and getattr(cloud, "fields", None) is None:
+            raise ValueError("write_las: cloud must be the PointCloud of a LAS file (read_point_cloud)")
+        if cloud is not None and len(cloud.fields["X"]) != len(self._points):
+            raise ValueError(f"write_las: the cloud has {len(cloud.fields['X'])} points, the result "
+                             f"{len(self._points)}")
+        if cloud is not None:
+            info = dict(cloud.las)
+            fields = cloud.fields
+        else:
+            if len(self._points):
+                scale, offset = _native.las_scale(list(self._points.min(axis=0)), list(self._points.max(axis=0)))
+            else:
+                scale, offset = (0.001,) * 3, (0.0,) * 3
+            info = {"scale": scale, "offset": offset, "rgb": False}
+            fields = None
+        layers = [vars(self[name]) for name in self.layers]
+        records, stats = _native.las_records(self._points, self.outlier, layers, fields, info)
+        header = _native.las_header(info, list(self.layers), len(self._points), list(stats["min"]),
+                                    list(stats["max"]), list(stats["by_return"]))
+        def write(temporary):
+            with open(temporary, "wb") as f:
+                f.write(header)
+                f.write(records)
+        atomic_write(path, write)
+
+    def to_dataframe(self, name):
+        """One layer as a pandas DataFrame, a row per point, the columns of ``to_structured(name)``.
+
+        Needs pandas (Debian's python3-pandas), which the module does not depend on otherwise.
+        """
+        try:
+            import pandas
+        except ImportError:
+            raise ImportError("to_dataframe needs pandas (apt-get install python3-pandas); "
+                              "to_structured() gives the same columns as a numpy structured array") from None
+        return pandas.DataFrame(self.to_structured(name))
+
+    def write_ply(self, path, precision="float32"):
+        """Writes the values to ``path`` as the program's ``curvatures.ply``; returns ``path``.
 
         A binary little-endian PLY point cloud: per point x y z (float64),
-        outlier, and per layer L the float32 properties nx_L ny_L nz_L H_L K_L
-        k1_L k2_L d1x_L .. d2z_L radius_L distance_L and the uchar source_L,
-        the scalar fields CloudCompare shows by name. The file is written
-        beside ``path`` and renamed into place: it is never half written.
+        outlier, and per layer L the properties nx_L ny_L nz_L H_L K_L k1_L
+        k2_L d1x_L .. d2z_L radius_L distance_L and the uchar source_L, the
+        scalar fields CloudCompare shows by name, and a comment line per layer.
+
+        precision: "float32" (default), the program's file, the same bytes as
+            ``conformal_curvature`` on the same points and options; or
+            "float64", the values as doubles with the run's decisions (spacing,
+            noise, smoothing, each layer's scale and surface report) in one more
+            comment line, so that ``read_curvatures`` gives back a Result equal
+            to this one to the bit.
+
+        The file is written beside ``path`` and renamed into place, so it is
+        never half written; it gets a new file's mode (-rw-r--r-- under umask
+        022). Errors (a missing folder, no permission) name ``path``.
         """
         path = os.fspath(path)
-        folder = os.path.dirname(os.path.abspath(path))
-        handle, temporary = tempfile.mkstemp(prefix=".", suffix=".ply.part", dir=folder)
-        os.close(handle)
-        try:
-            _native.write_point_cloud(temporary, self._points, self.outlier,
-                                      [vars(self[name]) for name in self.layers])
-            os.replace(temporary, path)
-        except BaseException:
-            os.unlink(temporary)
-            raise
+        if precision == "float64":
+            curvature_file.write_double_ply(path, self._points, self.outlier, [self[name] for name in self.layers],
+                                            self.spacing, self.noise, self.denoised, self.merged)
+        elif precision == "float32":
+            atomic_write(path, lambda temporary: _native.write_point_cloud(
+                temporary, self._points, self.outlier, [vars(self[name]) for name in self.layers]))
+        else:
+            raise ValueError(f"write_ply: precision must be 'float32' or 'float64', got {precision!r}")
+        return path
+
+
+def read_curvatures(path):
+    """The ``Result`` a ``curvatures.ply`` holds: the program's file, ``Result.write_ply``'s, or the
+    merged file (and the parts) of a tiled run.
+
+    From a file of ``write_ply(path, precision="float64")`` the Result is equal
+    (``==``) to the one that wrote it, to the bit. From the program's float32
+    file the values are its floats, the layers' scales ``a`` as their header
+    comments print them (6 digits), and ``spacing``, ``noise``, ``denoised``,
+    ``merged`` and the layers' ``surface`` reports are None (the file does not
+    hold them);
+    writing that Result again gives the same bytes.
+
+    Raises:
+        OSError: a missing or unreadable file.
+        ValueError: a file that is not such a point cloud (the message names it).
+    """
+    points, values = curvature_file.read_values(path)
+    return Result(points, values)
 
 
 def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors, extraction, threads,
-                   progress, spacing, noise):
-    """The checked arguments of the native job but its scales: (points, normals, the rest as it takes them)."""
+                   progress, spacing, noise, function="multiscale_curvatures", needs_spacing=True):
+    """The checked arguments of the native job but its scales: (points, normals, the rest as it takes them).
+
+    ``function`` names the caller in messages; ``needs_spacing``: whether the
+    job's curvature will be estimated (its radii in spacings need the spacing).
+    """
     if (spacing is None) != (noise is None):
         raise ValueError("spacing and noise are given together (the decisions of a larger run) or not at all")
     for name, value in (("spacing", spacing), ("noise", noise)):
@@ -260,7 +473,15 @@ def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_ne
         raise TypeError(f"denoise_neighbors must be an int or None, got {denoise_neighbors!r}")
     if progress is not None and not callable(progress):
         raise TypeError(f"progress must be callable as progress(stage, fraction), got {progress!r}")
-    return (points, normals, _option_items(radii, "radii"), _option_items(rings, "rings", integers=True),
+    _check_shape_points(function, points)
+    radii = _option_items(radii, "radii")
+    in_spacings = [item for item in radii if item == "auto" or item.endswith("s")]
+    if needs_spacing and spacing is None and in_spacings and len(points) < _NOISE_POINTS:
+        raise ValueError(f"{function}: {_points_text(len(points))}; radii in sample spacings ({', '.join(in_spacings)}) "
+                         f"need the sample spacing, estimated from each point's {_NOISE_POINTS - 1} nearest "
+                         f"neighbors: at least {_NOISE_POINTS} points; give the radii as lengths (radii=[0.1]) or "
+                         "rings (rings=[1], radii=[]), or spacing= and noise=")
+    return (points, normals, radii, _option_items(rings, "rings", integers=True),
             _choice(estimator, "estimator"), _choice(denoise, "denoise"),
             "" if denoise_neighbors is None else str(int(denoise_neighbors)),
             _choice(extraction, "extraction"), _threads(threads), progress,
@@ -268,12 +489,15 @@ def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_ne
 
 
 def _job(points, normals=None, *, radii=("auto",), rings=(), estimator="quadric", denoise="auto",
-         denoise_neighbors=None, extraction="front", threads=None, progress=None, spacing=None, noise=None):
+         denoise_neighbors=None, extraction="front", threads=None, progress=None, spacing=None, noise=None,
+         scales=1, function="multiscale_curvatures"):
     """The native job of these points and options, its shape built: ``closing_values()``,
     ``result(scales, progress)`` (the dict ``Result`` takes; the job's last call, which frees
-    the shape) and ``release()``."""
-    return _native.Job(*_job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors,
-                                       extraction, threads, progress, spacing, noise))
+    the shape) and ``release()``. ``scales``: how many scales ``result`` will be given
+    (0: only the closing values will be asked for), for the shares of the progress."""
+    arguments = _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_neighbors, extraction,
+                               threads, progress, spacing, noise, function=function, needs_spacing=scales > 0)
+    return _native.Job(*arguments, scales=scales)
 
 
 def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("auto", "2s", "4s", "8s", "16s"),
@@ -314,8 +538,10 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
             (the boundary of the enclosed solid).
         threads: the most threads to use (TBB); None for all. The results
             are the same with any number.
-        progress: optional callable ``progress(stage, fraction)``, called
-            between steps with a stage name and the fraction done in [0, 1].
+        progress: optional callable ``progress(stage, fraction)``: the step's
+            name and the fraction done in [0, 1], in proportion to the time
+            the steps take; called at each step's start and every 0.1 s or so
+            inside, never decreasing, last with ("done", 1.0).
         spacing, noise: the decisions of a larger run, both or neither: the
             sample spacing (in units of the points) and the noise (in
             spacings) of the whole cloud these points are part of, as
@@ -331,8 +557,10 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
 
     Raises:
         ValueError: NaN or infinite coordinates (naming the index), points
-            that do not span 3D (fewer than 4 distinct, coplanar), a scale or
-            radius out of range, an unknown option, wrong shapes, only one of
+            that do not span 3D (fewer than 4 distinct, coplanar), radii in
+            spacings ("auto", "4s") on fewer than 25 points or on points whose
+            spacing cannot be estimated (without spacing= and noise=), a scale
+            or radius out of range, an unknown option, wrong shapes, only one of
             spacing and noise, a spacing not finite and > 0, a noise < 0 or NaN.
         TypeError: arrays that are not of real numbers, options of the wrong type.
         KeyboardInterrupt: Ctrl-C (within about a second, the work unwound).
@@ -362,7 +590,7 @@ def front_closing_values(points, normals=None, *, denoise="auto", denoise_neighb
         and for all but the first of coincident points (they share a vertex).
     """
     job = _job(points, normals, denoise=denoise, denoise_neighbors=denoise_neighbors, threads=threads,
-               progress=progress, spacing=spacing, noise=noise)
+               progress=progress, spacing=spacing, noise=noise, scales=0, function="front_closing_values")
     closing = job.closing_values()
     job.release()
     return closing
@@ -384,20 +612,57 @@ class ConformalAlphaShape:
             distances (all 1: the classic alpha
             shape, ``a`` a squared radius as in CGAL's Alpha_shape_3).
 
+    Attributes and protocols: ``points`` (the (N, 3) points, read-only),
+    ``len(shape)`` (N), ``dimension`` (3), ``local_feature_sizes`` (per
+    point), ``repr``; a shape pickles as its points (and the local scales
+    given) and is rebuilt when unpickled, with the same spectrum: it can be
+    sent to Dask's workers.
+
     Raises:
-        ValueError: as ``multiscale_curvatures``, and for local feature sizes that
+        ValueError: fewer than 4 points, points that do not span 3D, NaN or
+            infinite coordinates (naming the index), local feature sizes that
             are not finite and positive (naming the index).
     """
 
     def __init__(self, points, local_scales=None):
-        points = _triples(points, "points")
+        points = np.array(_triples(points, "points"), dtype=np.float64, order="C")  # a copy of its own
+        points.flags.writeable = False
+        _check_shape_points("ConformalAlphaShape", points)
         if local_scales is not None:
             local_scales = _real_array(local_scales, "local_scales")
             if local_scales.shape != (len(points),):
                 raise ValueError(f"local_scales must be an (N,) array with N = {len(points)}, "
                                  f"got shape {local_scales.shape}")
-            local_scales = np.ascontiguousarray(local_scales, dtype=np.float64)
+            local_scales = np.array(local_scales, dtype=np.float64, order="C")
+            local_scales.flags.writeable = False
+        self._points = points
+        self._local_scales = local_scales
         self._shape = _native.Shape(points, local_scales)
+
+    def __reduce__(self):
+        return (ConformalAlphaShape, (self._points, self._local_scales))
+
+    def __len__(self):
+        return len(self._points)
+
+    def __repr__(self):
+        return (f"<ConformalAlphaShape: {len(self._points)} points, dimension {self.dimension}, "
+                f"{len(self.spectrum())} values in the spectrum>")
+
+    @property
+    def points(self):
+        """The (N, 3) float64 points, as given (read-only)."""
+        return self._points
+
+    @property
+    def dimension(self):
+        """The dimension of the triangulation (3 for points that span 3D)."""
+        return self._shape.dimension()
+
+    @property
+    def local_feature_sizes(self):
+        """The (N,) local feature size of each point (of its vertex, for coincident points)."""
+        return self._shape.local_feature_sizes()
 
     def spectrum(self):
         """The sorted distinct conformal values of the simplices (float64 array)."""
@@ -405,6 +670,10 @@ class ConformalAlphaShape:
 
     def alpha_at_quantile(self, q):
         """The quantile ``q`` in [0, 1] of the finite facets' values (the paper's scale choice)."""
+        if isinstance(q, bool) or not isinstance(q, numbers.Real):
+            raise TypeError(f"alpha_at_quantile: q must be a number in [0, 1], got {q!r}")
+        if not 0 <= q <= 1:
+            raise ValueError(f"alpha_at_quantile: the quantile q must be in [0, 1], got {q}")
         return self._shape.alpha_at_quantile(float(q))
 
     def suggest_scale(self, extraction="front", coverage=None):
@@ -413,13 +682,18 @@ class ConformalAlphaShape:
         ``coverage`` is the share to cover (default 0.99 of the front's
         vertices with "front", 0.9 of the points with "solid").
         """
+        if coverage is not None:
+            if isinstance(coverage, bool) or not isinstance(coverage, numbers.Real):
+                raise TypeError(f"suggest_scale: coverage must be a number in (0, 1], got {coverage!r}")
+            if not 0 < coverage <= 1:
+                raise ValueError(f"suggest_scale: coverage must be in (0, 1], got {coverage}")
         return self._shape.suggest_scale(_choice(extraction, "extraction"),
                                          None if coverage is None else float(coverage))
 
     def classify_facets(self, a):
         """Counts of the finite facets per class at scale ``a``: a dict with
         keys "exterior", "singular", "regular", "interior" (Alpha_shape_3's classes)."""
-        return self._shape.classify_facets(float(a))
+        return self._shape.classify_facets(_check_scale("classify_facets", a))
 
     def surface(self, a=None, extraction="front"):
         """The oriented surface at scale ``a`` (default: ``suggest_scale()``).
@@ -427,9 +701,12 @@ class ConformalAlphaShape:
         Returns ``(vertices, faces, point_index)``: (V, 3) float64 positions,
         (F, 3) int64 vertex indices of the triangles (counterclockwise seen
         from the side the normals point to), (V,) int64 the index of each
-        vertex's input point.
+        vertex's input point. Below every facet's value the surface is empty.
+
+        Raises ValueError for a NaN or negative ``a``.
         """
-        return self._shape.surface(None if a is None else float(a), _choice(extraction, "extraction"))
+        return self._shape.surface(None if a is None else _check_scale("surface", a),
+                                   _choice(extraction, "extraction"))
 
 
 def vertex_curvatures(vertices, faces, *, rings=None, radius=None, estimator="quadric"):
@@ -480,10 +757,33 @@ class NoiseEstimate(float):
     def __repr__(self):
         return f"NoiseEstimate({float(self):.4g} spacings, spacing {self.spacing:.4g})"
 
+    def __reduce__(self):
+        return (NoiseEstimate, ({"noise": float(self), "spacing": self.spacing, "noise_24": self.noise_24,
+                                 "calls_for_denoising": self.calls_for_denoising},))
+
+
+def _unchecked_noise_estimate(points):
+    """The library's estimate as it is: all zero for fewer than 25 points or no fit (tiled runs
+    pool it over tiles, some of which may be that small)."""
+    return NoiseEstimate(_native.estimate_noise(_triples(points, "points")))
+
 
 def estimate_noise(points):
-    """The noise of a point sample of a surface, in sample spacings (a ``NoiseEstimate``)."""
-    return NoiseEstimate(_native.estimate_noise(_triples(points, "points")))
+    """The noise of a point sample of a surface, in sample spacings (a ``NoiseEstimate``).
+
+    Raises:
+        ValueError: fewer than 25 points (a cubic is fitted to each sampled
+            point's 24 nearest neighbors), or points on which no fit can be
+            made (all coincident or on a line): the spacing cannot be estimated.
+    """
+    points = _triples(points, "points")
+    _check_noise_points("estimate_noise", points)
+    estimate = _unchecked_noise_estimate(points)
+    if not estimate.spacing > 0:
+        raise ValueError(f"estimate_noise: the noise and the sample spacing cannot be estimated on these "
+                         f"{len(points)} points: no sampled point has {_NOISE_POINTS - 1} nearest neighbors that are "
+                         "not coincident or on a line")
+    return estimate
 
 
 def denoise(points, neighbors=None):
@@ -495,9 +795,69 @@ def denoise(points, neighbors=None):
     """
     if neighbors is not None and (isinstance(neighbors, bool) or not isinstance(neighbors, numbers.Integral)):
         raise TypeError(f"neighbors must be an int or None, got {neighbors!r}")
-    return _native.denoise(_triples(points, "points"), None if neighbors is None else int(neighbors))
+    points = _triples(points, "points")
+    _check_noise_points("denoise", points)
+    return _native.denoise(points, None if neighbors is None else int(neighbors))
 
 
-def read_point_cloud(path):
-    """The points (and normals, or None) of a .xyz, .pwn, .ply, .off or .obj file, as the program reads them."""
-    return _native.read_point_cloud(os.fspath(path))
+class PointCloud(tuple):
+    """What ``read_point_cloud`` returns: the pair ``(points, normals)``, with
+
+    points: (N, 3) float64; normals: (N, 3) float64 or None;
+    fields: for a LAS file, a dict of (N,) arrays, the fields of the points
+        kept: classification, return_number, number_of_returns, intensity,
+        withheld, synthetic, key_point, overlap (bool), gps_time,
+        point_source_id, user_data, scan_angle (int16, in 0.006 degrees),
+        scanner_channel, scan_direction, edge_of_flight_line, red, green,
+        blue, nir, and the scaled integers X, Y, Z; else None;
+    las: for a LAS file, its header (version, point_format, number_of_points,
+        scale, offset, rgb, ...); else None;
+    counts: for a LAS file, how many points were read and how many each
+        filter kept, in order (read, classes, withheld, returns); else None;
+    summary: for a LAS file, the program's summary line of the input.
+    """
+
+    def __new__(cls, native):
+        self = super().__new__(cls, (native["points"], native["normals"]))
+        self.points = native["points"]
+        self.normals = native["normals"]
+        self.fields = native.get("fields")
+        self.las = native.get("las")
+        self.counts = native.get("counts")
+        self.summary = native.get("summary")
+        return self
+
+    def __repr__(self):
+        kind = f" LAS {self.las['version']} format {self.las['point_format']}" if self.las else ""
+        return f"<PointCloud{kind}: {len(self.points)} points>"
+
+
+def read_point_cloud(path, *, classes=None, drop_withheld=False, returns="all"):
+    """The points of a .xyz, .pwn, .ply, .off, .obj or .las file, as the program reads them.
+
+    Returns a ``PointCloud``: unpacks as ``points, normals = read_point_cloud(path)``
+    (normals None when the file has none), and for a LAS file (1.0 to 1.4,
+    point formats 0 to 10, uncompressed) holds the points' fields as arrays
+    (``cloud.fields["classification"]``, ...), the header and the filters'
+    counts. The filters, for LAS only (the program's ``--classes``,
+    ``--drop-withheld`` and ``--returns``):
+
+        classes: the classes to keep (e.g. ``[2, 6]``), None for all;
+        drop_withheld: leave out the points flagged withheld;
+        returns: "all", "first" (return number 1, or 0: unset) or "last"
+            (return number = number of returns).
+
+    Raises:
+        ValueError: a bad file, naming it and what is wrong (a .laz file or a
+            compressed LAS is refused, with how to decompress it), a filter on
+            other input, a bad filter.
+    """
+    if classes is None:
+        classes = ()
+    elif isinstance(classes, numbers.Integral):
+        classes = (classes,)
+    classes = _option_items(classes, "classes", integers=True)
+    if not isinstance(drop_withheld, bool):
+        raise TypeError(f"drop_withheld must be a bool, got {drop_withheld!r}")
+    return PointCloud(_native.read_point_cloud(os.fspath(path), classes, drop_withheld,
+                                               _choice(returns, "returns")))

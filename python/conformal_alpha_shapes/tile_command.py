@@ -7,7 +7,8 @@ import argparse
 # the Python keywords in the module's messages, and the flags that set them
 _FLAGS = {"scales": "--alpha", "radii": "--radius", "rings": "--rings", "estimator": "--estimator",
           "denoise_neighbors": "--denoise-neighbors", "denoise": "--denoise", "extraction": "--extraction",
-          "tile_points": "--tile-points", "radii, rings": "--radius, --rings"}
+          "tile_points": "--tile-points", "radii, rings": "--radius, --rings", "classes": "--classes",
+          "returns": "--returns"}
 
 
 def flag_message(message):
@@ -25,7 +26,7 @@ def arguments(argv):
         description="The program conformal_curvature's job on a cloud split into tiles, on Dask: "
                     "parts in DIR/parts (binary PLY, the fields of curvatures.ply plus input_index), "
                     "DIR/manifest.json, and with --merge DIR/curvatures.ply in input order.")
-    parser.add_argument("input", help="binary .ply (x y z [nx ny nz]), .npy (N x 3 or N x 6) or .xyz")
+    parser.add_argument("input", help="binary .ply (x y z [nx ny nz]), .npy (N x 3 or N x 6), .xyz or .las")
     parser.add_argument("--output", required=True, metavar="DIR",
                         help="the run's folder, readable and writable by every worker")
     parser.add_argument("--tile-points", type=int, default=1_000_000, metavar="N",
@@ -39,6 +40,11 @@ def arguments(argv):
     parser.add_argument("--tls-cert", metavar="FILE", help="TLS: this client's certificate")
     parser.add_argument("--tls-key", metavar="FILE", help="TLS: this client's private key")
     parser.add_argument("--merge", action="store_true", help="also write DIR/curvatures.ply in input order")
+    parser.add_argument("--las", action="store_true",
+                        help="with --merge, write DIR/curvatures.las (LAS 1.4, named extra bytes) instead")
+    parser.add_argument("--classes", default="", metavar="LIST", help="LAS input: keep these classes (e.g. 2,6)")
+    parser.add_argument("--drop-withheld", action="store_true", help="LAS input: leave out withheld points")
+    parser.add_argument("--returns", default="all", metavar="WHICH", help="LAS input: first, last or all returns")
     parser.add_argument("--alpha", default="auto", metavar="LIST", help="comma list of scales: auto and/or values")
     parser.add_argument("--radius", default=None, metavar="LIST",
                         help="comma list of radii: values, multiples of the spacing (4s), auto; "
@@ -94,7 +100,14 @@ def options(args):
             neighbors = int(args.denoise_neighbors)
         except ValueError:
             raise ValueError(f"denoise_neighbors: not an integer: '{args.denoise_neighbors}'") from None
+    classes = []
+    for item in _split_list(args.classes):
+        try:
+            classes.append(int(item))
+        except ValueError:
+            raise ValueError(f"classes: not a LAS class from 0 to 255: '{item}'") from None
     return dict(tile_points=args.tile_points, workers=args.workers, scheduler=args.scheduler, merge=args.merge,
+                las=args.las, classes=classes, drop_withheld=args.drop_withheld, returns=args.returns,
                 scales=_split_list(args.alpha), radii=radii, rings=ring_sizes, estimator=args.estimator,
                 denoise=args.denoise, denoise_neighbors=neighbors, extraction=args.extraction,
                 halo=args.halo, threads=args.threads, quiet=args.quiet)

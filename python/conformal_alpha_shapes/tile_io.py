@@ -4,18 +4,22 @@ manifest, and the merge into one ``curvatures.ply``; the tiles' point files
 are ``tile_partition``'s.
 
 Readers never hold the whole cloud: binary PLY and ``.npy`` are memory-mapped
-and read in slices, ``.xyz`` is parsed a chunk of lines at a time. Every file
+and read in slices, ``.xyz`` is parsed a chunk of lines at a time, LAS is read
+a range of records at a time by the program's reader (with the LiDAR
+filters), and the merged LAS is written a chunk at a time. Every file
 is written beside its final name and renamed into place (``os.replace``), so
-a file under its final name is always complete.
+a file under its final name is always complete, with the mode of any new
+file (``output_files``).
 """
 
 import hashlib
 import json
 import math
 import os
-import tempfile
 
 import numpy as np
+
+from . import output_files
 
 __all__ = [
     "InputError",
@@ -28,6 +32,7 @@ __all__ = [
     "read_part",
     "ply_header",
     "merge_parts",
+    "merge_parts_las",
     "file_digest",
     "read_manifest",
     "write_manifest",
@@ -48,13 +53,19 @@ _PLY_TYPES = {
 class Cloud:
     """A point cloud read in chunks: ``count`` points, ``has_normals``, and
     ``chunks(size)`` yielding ``(start, points, normals)`` with (n, 3) float64
-    arrays (normals None without them)."""
+    arrays (normals None without them). A LAS cloud has ``las`` (its header,
+    a dict), ``las_filter`` and ``las_counts`` (what the filters kept) and
+    ``las_fields(size)`` yielding ``(start, fields)`` in the same order."""
 
     def __init__(self, path, count, has_normals, reader):
         self.path = path
         self.count = count
         self.has_normals = has_normals
         self._reader = reader
+        self.las = None
+        self.las_filter = None
+        self.las_counts = None
+        self.las_fields = None
 
     def chunks(self, size):
         """The cloud in order, ``size`` points at a time."""
@@ -200,19 +211,84 @@ def _open_xyz(path):
     return Cloud(path, count, columns == 6, chunks)
 
 
-def open_cloud(path):
-    """The cloud at ``path`` (binary PLY, ``.npy``, ``.xyz``), checked to the end.
+# LAS records read at a time: a chunk's points and fields take about 100 bytes each.
+LAS_CHUNK = 1 << 20
 
-    Raises ``InputError`` with the program's wording: a missing file, a bad
-    line of a ``.xyz`` (file and line), a NaN or infinite coordinate.
+
+def _open_las(path, las_filter):
+    """A LAS file read a range of records at a time (``las_filter``: the
+    keywords classes, drop_withheld, returns of ``read_point_cloud``)."""
+    from . import _native
+    classes = [str(c) for c in las_filter.get("classes", ())]
+    drop, returns = bool(las_filter.get("drop_withheld", False)), las_filter.get("returns", "all")
+
+    def read(first, size):
+        try:
+            return _native.read_las_chunk(path, first, size, classes, drop, returns)
+        except ValueError as e:
+            raise InputError(str(e)) from None
+
+    head = read(0, 0)
+    total = head["las"]["number_of_points"]
+
+    def kept_chunks(size):
+        start = 0
+        for first in range(0, total, size):
+            chunk = read(first, size)
+            yield start, chunk
+            start += len(chunk["points"])
+
+    counts = {"read": 0, "classes": 0, "withheld": 0, "returns": 0}
+    for _, chunk in kept_chunks(LAS_CHUNK):
+        for key in counts:
+            counts[key] += chunk["counts"][key]
+
+    def chunks(size):
+        for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK)):
+            if len(chunk["points"]):
+                yield start, chunk["points"], None
+
+    def fields(size):
+        for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK)):
+            if len(chunk["points"]):
+                yield start, chunk["fields"]
+
+    cloud = Cloud(path, counts["returns"], False, chunks)
+    cloud.las = head["las"]
+    cloud.las_filter = {"classes": [int(c) for c in classes], "drop_withheld": drop, "returns": returns}
+    cloud.las_counts = counts
+    cloud.las_fields = fields
+    return cloud
+
+
+def open_cloud(path, las_filter=None):
+    """The cloud at ``path`` (binary PLY, ``.npy``, ``.xyz``, ``.las``), checked to the end.
+
+    ``las_filter``: for LAS, a dict of the keywords classes, drop_withheld
+    and returns of ``read_point_cloud`` (the points the filters keep are
+    the cloud). Raises ``InputError`` with the program's wording: a missing
+    file, a bad line of a ``.xyz`` (file and line), a bad LAS file, a NaN or
+    infinite coordinate.
     """
     path = os.fspath(path)
     if not os.path.exists(path):
         raise InputError(f"{path}: no such file")
     extension = os.path.splitext(path)[1].lower()
-    openers = {".ply": _open_ply, ".npy": _open_npy, ".xyz": _open_xyz}
+    las_filter = las_filter or {}
+    active = bool(las_filter.get("classes")) or las_filter.get("drop_withheld") or \
+        las_filter.get("returns", "all") != "all"
+    if active and extension not in (".las", ".laz"):
+        raise InputError(f"{path}: classes, drop_withheld and returns filter LAS input (.las)")
+    if extension == ".laz":
+        from . import _native
+        try:
+            _native.read_point_cloud(path, [], False, "all")  # refuses it, saying how to decompress it
+        except ValueError as e:
+            raise InputError(str(e)) from None
+    openers = {".ply": _open_ply, ".npy": _open_npy, ".xyz": _open_xyz,
+               ".las": lambda p: _open_las(p, las_filter)}
     if extension not in openers:
-        raise InputError(f"{path}: tiled runs read .ply (binary), .npy and .xyz, not '{extension}'")
+        raise InputError(f"{path}: tiled runs read .ply (binary), .npy, .xyz and .las, not '{extension}'")
     cloud = openers[extension](path)
     for start, points, _ in cloud.chunks(1 << 20):
         bad = np.flatnonzero(~np.isfinite(points).all(axis=1))
@@ -224,17 +300,9 @@ def open_cloud(path):
 
 
 def atomic_write(path, write):
-    """Calls ``write(temporary_path)`` and renames the file to ``path``: never half written."""
-    folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(prefix=".", suffix=".part", dir=folder)
-    os.close(handle)
-    try:
-        write(temporary)
-        os.replace(temporary, path)
-    except BaseException:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
-        raise
+    """Calls ``write(temporary_path)`` and renames the file to ``path``: never half written
+    (``output_files.atomic_write``: the mode of any new file, errors naming ``path``)."""
+    output_files.atomic_write(path, write)
 
 
 _LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",
@@ -315,6 +383,68 @@ def merge_parts(path, part_paths, layers, descriptions, count):
                 out[block["input_index"].astype(np.int64)] = values
         out.flush()
         del out
+    atomic_write(path, write)
+
+
+def merge_parts_las(path, merged_ply, layers, cloud):
+    """``path``: the merged ``curvatures.ply`` (``merged_ply``, in input
+    order) as LAS 1.4, a chunk at a time: the LAS input's records (its
+    scaled integers and fields), else the points at a power-of-ten scale;
+    the layers' values as named extra bytes (as ``Result.write_las``)."""
+    from . import _native
+    records = np.memmap(merged_ply, dtype=part_dtype(layers, with_index=False), mode="r",
+                        offset=len(part_header(merged_ply)))
+    count = len(records)
+    if cloud.las is not None:
+        info = dict(cloud.las)
+        field_chunks = cloud.las_fields(LAS_CHUNK)
+    else:
+        low, high = np.full(3, np.inf), np.full(3, -np.inf)
+        for start in range(0, count, LAS_CHUNK):
+            block = records[start:start + LAS_CHUNK]
+            for k, axis in enumerate("xyz"):
+                low[k] = min(low[k], float(block[axis].min()))
+                high[k] = max(high[k], float(block[axis].max()))
+        scale, offset = _native.las_scale(list(low), list(high))
+        info = {"scale": scale, "offset": offset, "rgb": False}
+        field_chunks = ((start, None) for start in range(0, count, LAS_CHUNK))
+    low = np.full(3, np.iinfo(np.int64).max)
+    high = np.full(3, np.iinfo(np.int64).min)
+    by_return = np.zeros(15, np.uint64)
+
+    def layer_arrays(block, name):
+        values = {"name": name, "description": ""}
+        for key, fields in (("normal", ("nx", "ny", "nz")), ("d1", ("d1x", "d1y", "d1z")),
+                            ("d2", ("d2x", "d2y", "d2z"))):
+            values[key] = np.column_stack([block[f"{f}_{name}"] for f in fields]).astype(np.float64)
+        for key in ("H", "K", "k1", "k2", "radius", "distance"):
+            values[key] = block[f"{key}_{name}"].astype(np.float64)
+        values["source"] = np.ascontiguousarray(block[f"source_{name}"])
+        return values
+
+    def write(temporary):
+        nonlocal low, high, by_return
+        header_size = len(_native.las_header(info, list(layers), 0, [0] * 3, [0] * 3, [0] * 15))
+        with open(temporary, "wb") as f:
+            f.write(b"\0" * header_size)
+            written = 0
+            for start, fields in field_chunks:
+                n = len(fields["X"]) if fields is not None else min(LAS_CHUNK, count - start)
+                block = records[start:start + n]
+                points = np.column_stack([block[axis] for axis in "xyz"]).astype(np.float64)
+                data, stats = _native.las_records(points, block["outlier"].astype(bool),
+                                                  [layer_arrays(block, name) for name in layers], fields, info)
+                f.write(data)
+                written += n
+                low = np.minimum(low, stats["min"])
+                high = np.maximum(high, stats["max"])
+                by_return += np.array(stats["by_return"], np.uint64)
+            if written != count:
+                raise InputError(f"{cloud.path}: the input changed during the run ({written} points, "
+                                 f"the parts hold {count})")
+            f.seek(0)
+            f.write(_native.las_header(info, list(layers), count, [int(x) for x in low], [int(x) for x in high],
+                                       [int(x) for x in by_return]))
     atomic_write(path, write)
 
 

@@ -22,9 +22,9 @@ def _peak_memory():
 
 def tile_noise(folder, tile, has_normals):
     """The noise estimate of a tile's core points: their number and spacing."""
-    from . import estimate_noise
+    from . import _unchecked_noise_estimate
     _, points, _, _ = tile_partition.load_tile(folder, tile, has_normals, with_halo=False)
-    return {"core": len(points), "spacing": estimate_noise(points).spacing}
+    return {"core": len(points), "spacing": _unchecked_noise_estimate(points).spacing}
 
 
 def tile_outliers(folder, tile, has_normals):

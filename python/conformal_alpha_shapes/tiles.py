@@ -188,12 +188,13 @@ def _start_client(workers, scheduler, security):
 def process_tiles(input, output, *, tile_points=1_000_000, workers=None, scheduler=None, security=None,
                   client=None, merge=False, scales=("auto",), radii=("auto", "2s", "4s", "8s", "16s"),
                   rings=(), estimator="quadric", denoise="auto", denoise_neighbors=None, extraction="front",
-                  halo=None, threads=1, quiet=False):
+                  halo=None, threads=1, quiet=False, classes=None, drop_withheld=False, returns="all", las=False):
     """The program's job on a cloud split into tiles, on a Dask cluster.
 
     Parameters:
         input: a binary PLY (float or double x y z, optional nx ny nz), a
-            ``.npy`` of shape (N, 3) or (N, 6) (memory-mapped) or a ``.xyz``.
+            ``.npy`` of shape (N, 3) or (N, 6) (memory-mapped), a ``.xyz`` or
+            a ``.las`` (LAS 1.0 to 1.4, read a range of records at a time).
         output: the folder of the run: ``parts/part_NNNNN.ply`` (each tile's
             core points, the fields of the program's ``curvatures.ply`` plus
             ``input_index``), ``manifest.json``, ``summary.json`` (what this
@@ -207,6 +208,12 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
             ``distributed.security.Security``) for TLS.
         client: an existing ``distributed.Client`` instead of either.
         merge: also write ``curvatures.ply``, the program's file.
+        las: with ``merge``, write ``curvatures.las`` instead (LAS 1.4, as
+            ``Result.write_las``: a LAS input's records and fields, the
+            values as named extra bytes), a chunk at a time.
+        classes, drop_withheld, returns: for a LAS input, the filters of
+            ``read_point_cloud``: the run is on the points they keep (the
+            parts' ``input_index`` counts those).
         scales, radii, rings, estimator, denoise, denoise_neighbors,
         extraction: as ``multiscale_curvatures`` (scales: "auto" and values).
         halo: the halo's width in spacings (default ``halo_spacings()``).
@@ -219,6 +226,8 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
 
     Raises:
         tile_io.InputError: bad input (file and line), before any file is written.
+        TileError: fewer than 25 points (before any file is written), or
+            points whose sample spacing cannot be estimated.
         ValueError, TypeError: bad options, as ``multiscale_curvatures``.
     """
     options = {"scales": [str(x) for x in ((scales,) if isinstance(scales, (str, float, int)) else scales)],
@@ -227,13 +236,20 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
                "estimator": estimator, "denoise": {True: "on", False: "off"}.get(denoise, denoise),
                "denoise_neighbors": denoise_neighbors, "extraction": extraction,
                "tile_points": int(tile_points), "halo": halo}
+    las_filter = {"classes": [int(c) for c in ((classes,) if isinstance(classes, int) else (classes or ()))],
+                  "drop_withheld": bool(drop_withheld), "returns": returns}
+    if las_filter != {"classes": [], "drop_withheld": False, "returns": "all"}:
+        options["las_filter"] = las_filter
     _check_options(options)
     if client is None and str(scheduler or "").startswith("tls://") and security is None:
         # else Dask fails with a TypeError about an ssl_context
         raise TileError(f"scheduler: {scheduler} needs security=distributed.security.Security(tls_ca_file=..., "
                         "tls_client_cert=..., tls_client_key=...)")
     input = os.fspath(input)
-    cloud = tile_io.open_cloud(input)
+    cloud = tile_io.open_cloud(input, las_filter)
+    if cloud.count < 25:
+        raise TileError(f"{input}: {cloud.count} points; a tiled run needs at least 25: the sample spacing, which "
+                        "sets the tiles' halos and radii, is estimated from each point's 24 nearest neighbors")
     started = time.monotonic()
     os.makedirs(os.path.join(output, "tiles"), exist_ok=True)
     os.makedirs(os.path.join(output, "parts"), exist_ok=True)
@@ -261,9 +277,15 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
             cluster.close()
     if merge:
         names = manifest["names"]
-        tile_io.merge_parts(os.path.join(output, "curvatures.ply"),
-                            [tile_partition.part_path(output, t) for t in range(manifest["tiles"])], names,
+        merged = os.path.join(output, "tiles", "merged.ply") if las else os.path.join(output, "curvatures.ply")
+        tile_io.merge_parts(merged, [tile_partition.part_path(output, t) for t in range(manifest["tiles"])], names,
                             manifest["descriptions"], cloud.count)
+        if las:
+            tile_io.merge_parts_las(os.path.join(output, "curvatures.las"), merged, names, cloud)
+            os.unlink(merged)
+    if cloud.las is not None:
+        summary["las"] = {"version": cloud.las["version"], "point_format": cloud.las["point_format"],
+                          "filter": cloud.las_filter, "counts": cloud.las_counts}
     summary["seconds"] = time.monotonic() - started
     tile_io.write_manifest(os.path.join(output, "summary.json"), summary)
     if not quiet:
@@ -315,8 +337,8 @@ def _sample_halo(sample, stride, options):
     """The halo's width as the partition foresees it: the rule's width in the
     spacing of the points, from the sample's spacing (every ``stride``-th
     point of a surface: ``sqrt(stride)`` times the points')."""
-    from . import estimate_noise
-    spacing = estimate_noise(sample).spacing / math.sqrt(stride)
+    from . import _unchecked_noise_estimate
+    spacing = _unchecked_noise_estimate(sample).spacing / math.sqrt(stride)
     return _halo(options, spacing) * spacing
 
 
@@ -331,7 +353,7 @@ def _global_noise(client, cloud, output, tiles, quiet):
     exact selection over the tiles), the sample of the points with the
     smallest order-free keys in that frame, and ``estimate_noise()`` on that
     sample with the neighbors of its fits, which it gives as on the whole cloud."""
-    from . import estimate_noise
+    from . import _unchecked_noise_estimate
     has_normals = cloud.has_normals
     kept, outliers = {}, []
 
@@ -364,7 +386,11 @@ def _global_noise(client, cloud, output, tiles, quiet):
     index = np.concatenate([f[0] for f in found])
     q = np.concatenate([f[1] for f in found])
     _, rows = np.unique(index, return_index=True)
-    estimate = estimate_noise(q[rows])
+    estimate = _unchecked_noise_estimate(q[rows])
+    if not estimate.spacing > 0:
+        raise TileError(f"{cloud.path}: {cloud.count} points; the sample spacing, which sets the tiles' halos and "
+                        "radii, is estimated from each point's 24 nearest neighbors and could not be: a tiled "
+                        "run needs at least 25 points, not all coincident or on a line")
     return {"spacing": float(np.ldexp(estimate.spacing, exponent)), "noise": float(estimate),
             "noise_24": estimate.noise_24, "outliers": len(outliers), "working_frame": [center, exponent]}
 
@@ -515,7 +541,17 @@ _SHAPES_TEXT = {
 def format_summary(summary):
     """The summary as the program prints its own: a few lines of text."""
     seams = [s for s in summary["seams"] if max(s["points"]) >= tile_orientation.MINIMUM_SEAM_POINTS]
-    lines = [f"{summary['points']} points in {summary['tiles']} tiles "
+    las = summary.get("las")
+    lines = []
+    if las:
+        kept = [f"classes {','.join(str(c) for c in las['filter']['classes'])} kept {las['counts']['classes']}"]\
+            if las["filter"]["classes"] else []
+        kept += [f"without withheld points kept {las['counts']['withheld']}"] if las["filter"]["drop_withheld"] else []
+        kept += [f"{las['filter']['returns']} returns kept {las['counts']['returns']}"] \
+            if las["filter"]["returns"] != "all" else []
+        lines.append("; ".join([f"LAS {las['version']}, point format {las['point_format']}, "
+                                f"{las['counts']['read']} points"] + kept))
+    lines += [f"{summary['points']} points in {summary['tiles']} tiles "
              f"({summary['tile_points_with_halo']} with halos of {summary['halo_spacings']:.1f} spacings), "
              f"{summary['reused_parts']} parts reused",
              f"noise: {summary['noise']:.3g} x spacing (spacing {summary['spacing']:.4g}); "

@@ -32,6 +32,10 @@ def process_tiles(
     halo: Optional[float] = ...,
     threads: int = ...,
     quiet: bool = ...,
+    classes: Optional[Union[int, Sequence[int]]] = ...,
+    drop_withheld: bool = ...,
+    returns: str = ...,
+    las: bool = ...,
 ) -> Dict[str, Any]: ...
 def format_summary(summary: Dict[str, Any]) -> str: ...
 def main(argv: Optional[List[str]] = ...) -> int: ...

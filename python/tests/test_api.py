@@ -200,7 +200,8 @@ def test_read_point_cloud():
 def test_help_shows_docstrings():
     for function in (cas.multiscale_curvatures, cas.ConformalAlphaShape, cas.ConformalAlphaShape.surface,
                      cas.vertex_curvatures, cas.estimate_noise, cas.denoise, cas.Result.write_ply,
-                     cas.Result.to_structured, cas.read_point_cloud):
+                     cas.Result.to_structured, cas.Result.to_dataframe, cas.read_point_cloud, cas.read_curvatures,
+                     cas.Layer.colors, cas.Result.write_las, cas.PointCloud):
         assert function.__doc__ and len(function.__doc__) > 60, function
     assert "Parameters" in cas.multiscale_curvatures.__doc__ and "Raises" in cas.multiscale_curvatures.__doc__
 

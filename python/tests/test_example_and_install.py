@@ -27,7 +27,7 @@ def test_example_writes_the_ply_and_the_picture(tmp_path):
 def test_module_from_an_install_prefix(tmp_path):
     build = required_path("CAS3_BUILD_DIR", "the build folder")
     subprocess.run(["cmake", "--install", build, "--prefix", str(tmp_path)], check=True, capture_output=True)
-    site = tmp_path / "lib" / "python3" / "dist-packages"
+    site = tmp_path / "lib" / f"python{sys.version_info[0]}.{sys.version_info[1]}" / "site-packages"
     assert (site / "conformal_alpha_shapes" / "__init__.pyi").exists()
     out = run_python("import numpy as np, conformal_alpha_shapes as cas\n"
                      "print(cas.__file__)\n"

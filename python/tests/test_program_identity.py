@@ -31,6 +31,14 @@ def test_bunny_ply_and_csv(tmp_path):
     points, normals = cas.read_point_cloud(bunny)
     assert normals is None
     r = check_same_bytes(tmp_path, bunny, points, None)
+    # the program's file read back: its floats, which write the same bytes
+    read = cas.read_curvatures(tmp_path / "program" / "curvatures.ply")
+    assert read.layers == r.layers and np.array_equal(read.points, points)
+    assert np.array_equal(read["r4s"].H, r["r4s"].H.astype(np.float32).astype(np.float64), equal_nan=True)
+    (tmp_path / "again").mkdir()
+    read.write_ply(tmp_path / "again" / "curvatures.ply")
+    assert (tmp_path / "again" / "curvatures.ply").read_bytes() == \
+        (tmp_path / "program" / "curvatures.ply").read_bytes()
     program_output(bunny, tmp_path / "csv", "--csv")
     table = np.genfromtxt(tmp_path / "csv" / "curvatures.csv", delimiter=",", names=True, dtype=None,
                           encoding="ascii")
@@ -65,3 +73,32 @@ def test_noisy_ellipsoid_100k(tmp_path):
     np.savetxt(path, points, fmt="%.17g")
     r = check_same_bytes(tmp_path, path, np.loadtxt(path), None)
     assert r.denoised
+
+
+def test_las_the_program_and_the_module_write_the_same_bytes(tmp_path):
+    """A LAS 1.3 file (point format 3) of the kitten with noise of class 7:
+    the program's --classes 2 --las and the module's read_point_cloud and
+    write_las give the same curvatures.las; so do both on the .xyz of the
+    kitten (a chosen scale)."""
+    import las_spec
+    points, _ = cas.read_point_cloud(scan_path("kitten.xyz"))
+    rng = np.random.default_rng(2)
+    everything = np.vstack([points, rng.uniform(points.min(axis=0), points.max(axis=0), (500, 3))])
+    order = rng.permutation(len(everything))
+    fields = las_spec.sample_fields(len(everything), 3)
+    for k, axis in enumerate("XYZ"):
+        fields[axis] = np.round(everything[order, k] / 1e-6).astype(np.int32)
+    fields["classification"] = np.where(order < len(points), 2, 7).astype(np.uint8)
+    path = tmp_path / "kitten.las"
+    las_spec.write_las(path, 3, 3, fields, scale=(1e-6,) * 3, offset=(0.0,) * 3)
+    expected = program_output(path, tmp_path / "program", "--las", "--classes", "2") / "curvatures.las"
+    cloud = cas.read_point_cloud(path, classes=[2])
+    assert len(cloud.points) == len(points)
+    cas.multiscale_curvatures(cloud.points).write_las(tmp_path / "module.las", cloud)
+    assert (tmp_path / "module.las").read_bytes() == expected.read_bytes()
+
+    xyz = tmp_path / "kitten_points.xyz"
+    np.savetxt(xyz, points, fmt="%.17g")
+    expected = program_output(xyz, tmp_path / "program_xyz", "--las") / "curvatures.las"
+    cas.multiscale_curvatures(points).write_las(tmp_path / "module_xyz.las")
+    assert (tmp_path / "module_xyz.las").read_bytes() == expected.read_bytes()

@@ -51,6 +51,36 @@ def test_progress_is_reported_in_order():
     assert stages[0] == "conformal alpha shape" and "surface at scale 50%" in stages and stages[-1] == "done"
 
 
+def test_progress_moves_inside_the_steps():
+    """Calls at each step's start and every 0.1 s inside, by the time the steps take."""
+    points, _, _ = ellipsoid(40000, (1.5, 1.0, 0.75), noise=0.002, seed=5)
+    calls = []
+    start = time.monotonic()
+    cas.multiscale_curvatures(points, progress=lambda stage, f: calls.append((time.monotonic() - start, stage, f)))
+    total = time.monotonic() - start
+    fractions = [f for _, _, f in calls]
+    assert fractions == sorted(fractions) and calls[-1][1:] == ("done", 1.0)
+    stages = [stage for _, stage, _ in calls]
+    assert stages[0] == "conformal alpha shape" and stages.count("conformal alpha shape") > 1
+    assert stages.count("curvature at scale auto") > 2
+    assert len(calls) >= total / 0.1 / 3, (len(calls), total)
+    # halfway through the time, about halfway through the bar
+    middle = [f for t, _, f in calls if t <= total / 2][-1]
+    assert 0.2 < middle < 0.8, calls
+
+
+def test_an_exception_in_progress_inside_a_step_stops_the_call():
+    points, _, _ = ellipsoid(40000, (1.5, 1.0, 0.75), noise=0.002, seed=5)
+
+    def fail(stage, fraction):
+        if stage == "conformal alpha shape" and fraction > 0:
+            raise RuntimeError("stop in the shape")
+    start = time.monotonic()
+    with pytest.raises(RuntimeError, match="stop in the shape"):
+        cas.multiscale_curvatures(points, progress=fail)
+    assert time.monotonic() - start < 2
+
+
 def test_an_exception_in_progress_stops_the_call():
     def fail(stage, fraction):
         if stage.startswith("curvature"):

@@ -3,6 +3,7 @@ the answer of one run; the scheduler-and-workers path; seams; faults; bad
 input; atomic writes. Small clouds, so that the file runs in about 100 s on
 two cores; a service that cannot start fails the test."""
 import os
+import re
 import signal
 import socket
 import subprocess
@@ -136,6 +137,29 @@ def test_the_merged_file_is_the_programs_format(scene_run):
     # the same fields; the descriptions differ only by the scale's value
     strip = lambda header: [line for line in header.split(b"\n") if not line.startswith(b"comment layer")]
     assert strip(mine_header) == strip(their_header)
+    # read back into a Result, which writes the same bytes
+    merged = cas.read_curvatures(folder / "out" / "curvatures.ply")
+    assert merged.layers == one.layers and np.array_equal(merged.points, one.points)
+    merged.write_ply(folder / "again.ply")
+    assert (folder / "again.ply").read_bytes() == (folder / "out" / "curvatures.ply").read_bytes()
+
+
+def test_the_files_have_a_new_files_mode(scene_run):
+    """Parts, manifest, summary and merged file: 0666 less the umask (the run's and its workers')."""
+    folder = scene_run[4] / "out"
+    umask = os.umask(0)
+    os.umask(umask)
+    files = [os.path.join(root, name) for root, _, names in os.walk(folder) for name in names]
+    assert any(path.endswith("curvatures.ply") for path in files) and any("part" in path for path in files)
+    for path in files:
+        assert os.stat(path).st_mode & 0o777 == 0o666 & ~umask, path
+
+
+def test_a_dask_task_receives_a_shape(client):
+    points, _ = fibonacci_sphere(500)
+    shape = cas.ConformalAlphaShape(points)
+    spectrum, count = client.submit(lambda s: (s.spectrum(), len(s)), shape, pure=False).result()
+    assert np.array_equal(spectrum, shape.spectrum()) and count == 500
 
 
 def test_seams_agree_and_closed_parts_point_outward(scene_run):
@@ -378,6 +402,9 @@ def test_bad_input_fails_before_any_file_is_written(tmp_path):
         tiles.process_tiles(nan, tmp_path / "out", workers=1)
     good = tmp_path / "good.xyz"
     good.write_text("0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+    with pytest.raises(tiles.TileError, match=r"good.xyz: 4 points; a tiled run needs at least 25: .* 24 nearest"):
+        tiles.process_tiles(good, tmp_path / "out", workers=1)
+    assert not (tmp_path / "out").exists()
     with pytest.raises(tiles.TileError, match=r"scheduler: tls://127.0.0.1:1 needs security="):
         tiles.process_tiles(good, tmp_path / "out", scheduler="tls://127.0.0.1:1")
     run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(good), "--output",
@@ -387,6 +414,28 @@ def test_bad_input_fails_before_any_file_is_written(tmp_path):
     run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / "missing.npy"),
                           "--output", str(tmp_path / "out")], capture_output=True, text=True)
     assert run.returncode == 1 and "missing.npy: no such file" in run.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_bad_las_input_and_filters_fail_before_any_file_is_written(tmp_path):
+    import las_spec
+    good = tmp_path / "good.las"
+    las_spec.write_las(good, 4, 6, las_spec.sample_fields(10, 6))
+    data = good.read_bytes()
+    (tmp_path / "scan.laz").write_bytes(data)
+    (tmp_path / "short.las").write_bytes(data[:-1])
+    cases = [(["scan.laz"], r"scan.laz: compressed LAS \(LAZ\) cannot be read without LASzip; decompress it"),
+             (["short.las"], "short.las: the header announces 10 points of 30 bytes, the file holds 9"),
+             (["good.las", "--classes", "2,x"], "--classes: not a LAS class from 0 to 255: 'x'"),
+             (["good.las", "--classes", "256"], "--classes: not a LAS class from 0 to 255: '256'"),
+             (["good.las", "--returns", "second"], "--returns: unknown returns 'second'")]
+    for args, message in cases:
+        run = subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", str(tmp_path / args[0]),
+                              "--output", str(tmp_path / "out"), *args[1:]], capture_output=True, text=True)
+        assert run.returncode == 1 and re.search(message, run.stderr), (args, run.stderr)
+    np.save(tmp_path / "points.npy", np.zeros((10, 3)))
+    with pytest.raises(tile_io.InputError, match="points.npy: classes, drop_withheld and returns filter LAS input"):
+        tiles.process_tiles(tmp_path / "points.npy", tmp_path / "out", workers=1, classes=[2])
     assert not (tmp_path / "out").exists()
 
 
@@ -428,3 +477,66 @@ def test_writes_are_atomic(tmp_path):
     tile_io.write_manifest(str(tmp_path / "manifest.json"), {"a": 1})
     assert tile_io.read_manifest(str(tmp_path / "manifest.json")) == {"a": 1}
     assert sorted(os.listdir(tmp_path)) == ["manifest.json"]
+
+
+def test_a_las_input_is_read_in_chunks_and_gives_the_answer_of_its_points_as_ply(client, tmp_path, monkeypatch):
+    """A LAS 1.2 file (point format 1) of a scene and noise of class 7: the
+    run on class 2 reads it a range of records at a time and writes
+    curvatures.las whose records are the input's and whose values are those
+    of a run on the same points as binary PLY."""
+    import las_spec
+    from conformal_alpha_shapes import _native
+    points, _ = scene(24_000, seed=3)
+    rng = np.random.default_rng(5)
+    noise = rng.uniform(-2, 2, (1500, 3))
+    everything = np.vstack([points, noise])
+    order = rng.permutation(len(everything))
+    everything = everything[order]
+    classification = np.where(order < len(points), 2, 7).astype(np.uint8)
+    fields = las_spec.sample_fields(len(everything), 1)
+    scale, offset = (1e-5, 1e-5, 1e-5), (0.0, 0.0, 0.0)
+    for k, axis in enumerate("XYZ"):
+        fields[axis] = np.round(everything[:, k] / scale[k]).astype(np.int32)
+    fields["classification"] = classification
+    fields["withheld"] = np.zeros(len(everything), bool)
+    las_path = tmp_path / "scene.las"
+    las_spec.write_las(las_path, 2, 1, fields, scale=scale, offset=offset)
+    _, records, _, xyz = las_spec.read_las(las_path)
+    kept = xyz[classification == 2]
+    ply_path = tmp_path / "scene.ply"
+    with open(ply_path, "wb") as f:
+        f.write(f"ply\nformat binary_little_endian 1.0\nelement vertex {len(kept)}\nproperty double x\n"
+                "property double y\nproperty double z\nend_header\n".encode())
+        kept.astype("<f8").tofile(f)
+
+    requested = []
+    native_read = _native.read_las_chunk
+
+    def recording(path, first, count, *rest):
+        requested.append(count)
+        return native_read(path, first, count, *rest)
+    monkeypatch.setattr(_native, "read_las_chunk", recording)
+    monkeypatch.setattr(tile_io, "LAS_CHUNK", 4096)
+    options = dict(tile_points=6_000, client=client, merge=True, quiet=True, radii=("auto", "4s"))
+    summary = tiles.process_tiles(las_path, tmp_path / "out_las", classes=[2], las=True, **options)
+    assert max(requested) <= 4096 and len(requested) > 3 * len(everything) // 4096
+    assert summary["las"]["counts"] == {"read": len(everything), "classes": len(kept), "withheld": len(kept),
+                                        "returns": len(kept)}
+    assert (f"LAS 1.2, point format 1, {len(everything)} points; classes 2 kept {len(kept)}"
+            in tiles.format_summary(summary))
+    assert not (tmp_path / "out_las" / "curvatures.ply").exists()
+    reference = tiles.process_tiles(ply_path, tmp_path / "out_ply", **options)
+    assert reference["a"] == summary["a"] and reference["tiles"] == summary["tiles"] >= 4
+
+    header, out_records, extra, out_xyz = las_spec.read_las(tmp_path / "out_las" / "curvatures.las")
+    assert header["minor"] == 4 and header["format"] == 6 and header["count"] == len(kept)
+    assert out_xyz.tobytes() == kept.tobytes()
+    for axis in "XYZ":
+        assert np.array_equal(out_records[axis], records[axis][classification == 2])
+    assert np.array_equal(out_records["gps_time"], records["gps_time"][classification == 2])
+    merged = read_merged(tmp_path / "out_ply", summary["layers"])
+    assert np.array_equal(extra["outlier"], merged["outlier"])
+    for name in summary["layers"]:
+        for value in ("H", "K", "nx", "d1z", "radius", "distance", "source"):
+            assert np.array_equal(extra[f"{value}_{name}"], merged[f"{value}_{name}"], equal_nan=value != "source"), \
+                (name, value)

@@ -18,7 +18,9 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -49,6 +51,7 @@ struct Run
 {
   int exit_code;
   std::string err;
+  std::string out;
 };
 
 // Runs the program with `args` (a shell fragment) from the work directory,
@@ -56,14 +59,17 @@ struct Run
 Run run(const std::string& args, const std::string& environment = "")
 {
   fs::create_directories(work);
-  const fs::path err = work / "stderr.txt";
+  const fs::path err = work / "stderr.txt", out = work / "stdout.txt";
   const std::string command = "cd '" + work.string() + "' && " + environment + " '" + std::string(CAS3_PROGRAM) + "' " +
-                              args + " 2> '" + err.string() + "' > /dev/null";
+                              args + " 2> '" + err.string() + "' > '" + out.string() + "'";
   const int status = std::system(command.c_str());
-  std::ifstream in(err);
-  std::stringstream text;
-  text << in.rdbuf();
-  return Run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+  auto text_of = [](const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  return Run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, text_of(err), text_of(out)};
 }
 
 struct Csv
@@ -258,6 +264,8 @@ BOOST_AUTO_TEST_CASE(bad_input_fails_with_one_line_and_no_output)
     binary += std::string(8, '\0').replace(0, 1, 1, char(i));
   binary.resize(binary.size() - 7);
   write("truncated_binary.ply", binary);
+  write("points.laz", "LASF and then compressed points");
+  write("zero_header.las", std::string("LASF") + std::string(223, '\0'));
   fs::create_directories(work / "a_directory.xyz");
   std::ofstream(work / "a_file") << "not a directory\n";
 
@@ -300,6 +308,11 @@ BOOST_AUTO_TEST_CASE(bad_input_fails_with_one_line_and_no_output)
     {"not.ply", "not.ply:1: not a PLY file"},
     {"short_line.ply", "short_line.ply:9: too few values for element vertex"},
     {"truncated_binary.ply", "truncated binary PLY: the header promises 5 vertex elements, the file ends in element 4"},
+    {"points.laz", "points.laz: compressed LAS (LAZ) cannot be read without LASzip; decompress it first"},
+    {"zero_header.las", "zero_header.las: unknown LAS version 0.0"},
+    {"three.xyz --classes 2", "--classes, --drop-withheld and --returns filter LAS input (.las), not three.xyz"},
+    {"zero_header.las --classes 2,300", "--classes: not a LAS class from 0 to 255: '300'"},
+    {"zero_header.las --returns middle", "--returns: unknown returns 'middle' (all, first, last)"},
     {"one.xyz", "the 1 input points (1 distinct) span dimension 0"},
     {"three.xyz", "span dimension 2"},
     {"collinear.xyz", "span dimension 1"},
@@ -774,6 +787,135 @@ BOOST_AUTO_TEST_CASE(inputs_with_normals_run)
     }
     BOOST_TEST(on >= p.size() * 99 / 100);
     BOOST_TEST(inwards == on);
+  }
+}
+
+namespace {
+
+template <class T>
+void put_le(std::string& bytes, std::size_t at, T x)
+{
+  std::memcpy(&bytes[at], &x, sizeof(T));
+}
+
+template <class T>
+T get_le(const std::string& bytes, std::size_t at)
+{
+  T x;
+  std::memcpy(&x, &bytes[at], sizeof(T));
+  return x;
+}
+
+} // namespace
+
+// A LAS 1.2 file (point format 1, written here from the specification): a
+// sphere of class 2, some of its points withheld or second returns, and
+// noise of class 7 around it. The filters keep the sphere's first returns
+// not withheld, the summary counts each filter, and --las writes them with
+// their fields as LAS 1.4 whose extra bytes hold the values that the same
+// points give as .xyz, bit for bit.
+BOOST_AUTO_TEST_CASE(las_input_filters_and_las_output)
+{
+  const std::vector<Point> ball = sphere(1500);
+  const double scale = 1e-6;
+  std::vector<std::int32_t> X, Y, Z;
+  std::vector<int> classification, return_number, number_of_returns;
+  std::vector<bool> withheld;
+  for(std::size_t i = 0; i < ball.size() + 300; ++i)
+  {
+    const bool noise = i >= ball.size();
+    const double t = double(i);
+    const Point p = noise ? Point(2 * std::sin(7 * t), 2 * std::cos(3 * t), 2 * std::sin(t * t)) : ball[i];
+    X.push_back(std::int32_t(std::lround(p.x() / scale)));
+    Y.push_back(std::int32_t(std::lround(p.y() / scale)));
+    Z.push_back(std::int32_t(std::lround(p.z() / scale)));
+    classification.push_back(noise ? 7 : 2);
+    withheld.push_back(!noise && i % 10 == 0);
+    number_of_returns.push_back(i % 7 == 0 ? 2 : 1);
+    return_number.push_back(i % 7 == 0 ? 2 : 1);
+  }
+  const std::size_t n = X.size();
+  std::string las(227 + 28 * n, '\0');
+  las.replace(0, 4, "LASF");
+  las[24] = 1;
+  las[25] = 2;
+  put_le(las, 94, std::uint16_t(227));
+  put_le(las, 96, std::uint32_t(227));
+  las[104] = 1;
+  put_le(las, 105, std::uint16_t(28));
+  put_le(las, 107, std::uint32_t(n));
+  for(int k = 0; k < 3; ++k)
+    put_le(las, 131 + 8 * k, scale);
+  std::ofstream kept_xyz(work / "las_kept.xyz");
+  kept_xyz << std::setprecision(17);
+  std::size_t kept = 0, not_withheld = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t r = 227 + 28 * i;
+    put_le(las, r, X[i]);
+    put_le(las, r + 4, Y[i]);
+    put_le(las, r + 8, Z[i]);
+    put_le(las, r + 12, std::uint16_t(i));
+    las[r + 14] = char(return_number[i] | (number_of_returns[i] << 3));
+    las[r + 15] = char(classification[i] | (withheld[i] ? 128 : 0));
+    put_le(las, r + 20, 0.5 * double(i));
+    if(classification[i] != 2 || withheld[i])
+      continue;
+    ++not_withheld;
+    if(return_number[i] != 1)
+      continue;
+    ++kept;
+    kept_xyz << double(X[i]) * scale << " " << double(Y[i]) * scale << " " << double(Z[i]) * scale << "\n";
+  }
+  kept_xyz.close();
+  std::ofstream(work / "las_input.las", std::ios::binary) << las;
+
+  fs::remove_all(work / "out_las");
+  const Run r = run("las_input.las --classes 2 --drop-withheld --returns first --las --alpha auto --rings 2 "
+                    "--output out_las");
+  BOOST_TEST_INFO(r.err);
+  BOOST_REQUIRE_EQUAL(r.exit_code, 0);
+  BOOST_TEST(r.out.find("las_input.las: LAS 1.2, point format 1, 1800 points; classes 2 kept 1500; without withheld "
+                        "points kept " + std::to_string(not_withheld) + "; first returns kept "
+                        + std::to_string(kept) + "\n") == 0u, r.out);
+  BOOST_TEST(!fs::exists(work / "out_las" / "curvatures.ply"));
+  fs::remove_all(work / "out_xyz");
+  BOOST_REQUIRE_EQUAL(run("las_kept.xyz --alpha auto --rings 2 --output out_xyz --quiet").exit_code, 0);
+
+  CGAL::Point_set_3<Point> cloud;
+  {
+    std::ifstream in(work / "out_xyz" / "curvatures.ply", std::ios::binary);
+    BOOST_REQUIRE(CGAL::IO::read_PLY(in, cloud));
+  }
+  BOOST_REQUIRE_EQUAL(cloud.size(), kept);
+  const auto H = cloud.property_map<float>("H_k2");
+  BOOST_REQUIRE(H.second);
+
+  const std::string out = bytes_of(work / "out_las" / "curvatures.las");
+  BOOST_REQUIRE(out.size() > 375u);
+  BOOST_TEST(out[25] == 4);
+  BOOST_TEST(out[104] == 6);
+  BOOST_REQUIRE_EQUAL(get_le<std::uint64_t>(out, 247), kept);
+  const std::uint32_t offset = get_le<std::uint32_t>(out, 96);
+  const std::uint16_t length = get_le<std::uint16_t>(out, 105);
+  BOOST_REQUIRE_EQUAL(length, 30 + 1 + 61);
+  BOOST_TEST(std::string(&out[375 + 2]) == "LASF_Spec");
+  BOOST_TEST(std::string(&out[375 + 54 + 192 * 4 + 4]) == "H_k2");
+  BOOST_REQUIRE_EQUAL(out.size(), offset + std::size_t(length) * kept);
+  std::size_t k = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(classification[i] != 2 || withheld[i] || return_number[i] != 1)
+      continue;
+    const std::size_t record = offset + std::size_t(length) * k;
+    BOOST_TEST_INFO("point " << i);
+    BOOST_REQUIRE((get_le<std::int32_t>(out, record) == X[i] && get_le<std::int32_t>(out, record + 4) == Y[i] &&
+                   get_le<std::int32_t>(out, record + 8) == Z[i]));
+    BOOST_REQUIRE(get_le<std::uint16_t>(out, record + 12) == i);               // intensity
+    BOOST_REQUIRE(get_le<double>(out, record + 22) == 0.5 * double(i));        // GPS time
+    BOOST_REQUIRE(std::uint8_t(out[record + 16]) == 2);                        // class
+    BOOST_REQUIRE(get_le<float>(out, record + 30 + 1 + 12) == H.first[*(cloud.begin() + std::ptrdiff_t(k))]);
+    ++k;
   }
 }
 

@@ -4,11 +4,13 @@
 #ifndef CAS3_CURVATURE_OPTIONS_H
 #define CAS3_CURVATURE_OPTIONS_H
 
+#include "cas3_las.h"
 #include "cas3_layer_names.h"
 
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <initializer_list>
 #include <sstream>
@@ -24,11 +26,13 @@ inline const char* curvature_usage()
 {
   return "usage: conformal_curvature [INPUT] [--alpha LIST] [--radius LIST] [--rings LIST]\n"
          "                           [--estimator NAME] [--denoise MODE] [--denoise-neighbors K]\n"
-         "                           [--extraction NAME] [--values-follow-sheets] [--output DIR] [--csv]\n"
-         "                           [--quiet] [--help]\n"
+         "                           [--extraction NAME] [--values-follow-sheets] [--classes LIST]\n"
+         "                           [--drop-withheld] [--returns WHICH] [--output DIR] [--las]\n"
+         "                           [--csv] [--quiet] [--help]\n"
          "\n"
          "Multi-scale curvature of a point cloud on its conformal alpha shape.\n"
-         "  INPUT            .xyz, .pwn, .ply, .off or .obj (meshes: their vertices);\n"
+         "  INPUT            .xyz, .pwn, .ply, .off, .obj (meshes: their vertices) or\n"
+         "                   .las (LAS 1.0 to 1.4, uncompressed: decompress .laz first);\n"
          "                   default: the bundled Stanford bunny sample\n"
          "  --alpha LIST     comma list of conformal scales a: values > 0 (0.5),\n"
          "                   quantiles of the facet values in (0%, 100%] (25%; the\n"
@@ -49,7 +53,13 @@ inline const char* curvature_usage()
          "  --values-follow-sheets  with input normals, every point's values on its\n"
          "                   sheet's side (default: on its own normal's side where\n"
          "                   its sheet's normals are consistent)\n"
+         "  --classes LIST   LAS input: keep the points of these classes (e.g. 2,6)\n"
+         "  --drop-withheld  LAS input: leave out the points flagged withheld\n"
+         "  --returns WHICH  LAS input: first, last or all (default) returns\n"
          "  --output DIR     default ./conformal_curvature_out\n"
+         "  --las            write DIR/curvatures.las (LAS 1.4, point format 6, or 7\n"
+         "                   with colors; a LAS input's fields kept; the values below\n"
+         "                   as named extra bytes) instead of DIR/curvatures.ply\n"
          "  --csv            also write DIR/curvatures.csv, a row per point per layer\n"
          "  --quiet          no progress and no summary\n"
          "Writes DIR/curvatures.ply (binary point cloud: per point x y z, outlier,\n"
@@ -83,8 +93,10 @@ struct Curvature_options
   CGAL::Conformal_alpha_shapes_3::Denoising denoising = CGAL::Conformal_alpha_shapes_3::AUTOMATIC_DENOISING;
   unsigned int denoising_neighbors = 0;  // 0: as the library's plan says
   CGAL::Conformal_alpha_shapes_3::Surface_extraction extraction = CGAL::Conformal_alpha_shapes_3::ADVANCING_FRONT;
+  Las_filter las_filter;  // LAS input only
   std::string output = "conformal_curvature_out";
   bool orient_each_point = true;
+  bool las = false;  // curvatures.las instead of curvatures.ply
   bool csv = false;
   bool quiet = false;
   bool help = false;
@@ -210,6 +222,28 @@ inline CGAL::Conformal_alpha_shapes_3::Surface_extraction parse_extraction(const
   return extraction;
 }
 
+// A list of LAS classes, each from 0 to 255.
+inline std::vector<int> parse_las_classes(const std::string& name, const std::vector<std::string>& items)
+{
+  std::vector<int> classes;
+  for(const std::string& item : items)
+  {
+    int c = 0;
+    if(!options_detail::whole_number(item, 0, 255, c))
+      throw Option_error(name + ": not a LAS class from 0 to 255: '" + item + "'");
+    classes.push_back(c);
+  }
+  return classes;
+}
+
+inline Las_filter::Returns parse_las_returns(const std::string& name, const std::string& text)
+{
+  Las_filter::Returns returns = Las_filter::ALL_RETURNS;
+  options_detail::choose(returns, name, "returns", text, {{"all", Las_filter::ALL_RETURNS},
+    {"first", Las_filter::FIRST_RETURNS}, {"last", Las_filter::LAST_RETURNS}});
+  return returns;
+}
+
 // Reads the command line. Throws Option_error.
 inline Curvature_options parse_curvature_options(int argc, char* argv[])
 {
@@ -232,6 +266,14 @@ inline Curvature_options parse_curvature_options(int argc, char* argv[])
       o.csv = true;
     else if(arg == "--values-follow-sheets")
       o.orient_each_point = false;
+    else if(arg == "--las")
+      o.las = true;
+    else if(arg == "--classes")
+      o.las_filter.classes = parse_las_classes(arg, split_list(value()));
+    else if(arg == "--drop-withheld")
+      o.las_filter.drop_withheld = true;
+    else if(arg == "--returns")
+      o.las_filter.returns = parse_las_returns(arg, value());
     else if(arg == "--alpha")
       o.scales = parse_scales(arg, split_list(value()));
     else if(arg == "--rings" || arg == "--radius")
@@ -266,6 +308,11 @@ inline Curvature_options parse_curvature_options(int argc, char* argv[])
       input_given = true;
     }
   }
+  std::string extension = o.input.size() >= 4 ? o.input.substr(o.input.size() - 4) : "";
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if(o.las_filter.active() && extension != ".las" && extension != ".laz")
+    throw Option_error("--classes, --drop-withheld and --returns filter LAS input (.las), not " + o.input);
   return o;
 }
 

@@ -6,7 +6,9 @@
 #define CAS3_CURVATURE_OUTPUT_H
 
 #include "cas3_curvature_colors.h"
+#include "cas3_las.h"
 #include "cas3_layer_names.h"
+#include "cas3_read_point_cloud.h"
 
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -154,6 +156,11 @@ public:
     put(double(p.y()));
     put(double(p.z()));
   }
+  void put_bytes(const char* bytes, std::size_t n)
+  {
+    std::memcpy(m_p, bytes, n);
+    m_p += n;
+  }
   void put_values(const Layer& layer, std::size_t i)
   {
     for(int j = 0; j < Layer::number_of_values; ++j)
@@ -298,6 +305,107 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
     for(Vertex v : CGAL::vertices_around_face(surface.halfedge(faces[k]), surface))
       row.put(std::int32_t(number[v]));
   });
+}
+
+// The extra-bytes fields of the LAS point cloud, the PLY's properties by
+// the same names: outlier, then per layer L nx_L .. distance_L (float) and
+// source_L. Throws std::invalid_argument when a name is too long for LAS
+// (32 characters) or there are more than 21 layers.
+inline std::vector<Las_extra_field> las_extra_fields(const std::vector<std::string>& labels)
+{
+  static const char* const meaning[Layer::number_of_values] = {
+    "unit normal, x", "unit normal, y", "unit normal, z", "mean curvature H", "Gaussian curvature K",
+    "principal curvature k1 (max)", "principal curvature k2 (min)", "direction of k1, x", "direction of k1, y",
+    "direction of k1, z", "direction of k2, x", "direction of k2, y", "direction of k2, z",
+    "radius of the fit", "distance to the surface value"};
+  std::vector<Las_extra_field> fields = {{"outlier", "1: isolated far outlier", false}};
+  for(const std::string& label : labels)
+  {
+    for(int j = 0; j < Layer::number_of_values; ++j)
+      fields.push_back({std::string(Layer::value_names()[j]) + "_" + label, meaning[j], true});
+    fields.push_back({"source_" + label, "0 own vertex, 1 nearest, 2 none", false});
+  }
+  check_las_extra_fields(fields);
+  return fields;
+}
+
+// The point records of a LAS 1.4 file of `header` (las_header_bytes()):
+// per point i, `record(i)` (a Las_record) in point format 6 or 7, its
+// outlier flag and the values of the layers, as las_extra_fields() names
+// them.
+template <class Record>
+void write_las_point_records(std::ostream& out, std::size_t n, const Las_output_header& header, Record record,
+                             const std::vector<bool>& outlier, const std::vector<Layer>& layers)
+{
+  const std::size_t base = header.rgb ? 36 : 30;
+  const std::size_t row_size = std::size_t(las_output_record_length(header));
+  output_detail::write_rows(out, n, row_size, [&](std::size_t i, output_detail::Row_cursor& row) {
+    char bytes[36];
+    encode_las_record(record(i), header.rgb, bytes);
+    row.put_bytes(bytes, base);
+    row.put(std::uint8_t(outlier[i] ? 1 : 0));
+    for(const Layer& layer : layers)
+    {
+      row.put_values(layer, i);
+      row.put(layer.source[i]);
+    }
+  });
+}
+
+// The point cloud as LAS 1.4: point format 6, or 7 when the LAS input had
+// colors; the input's records (scaled integers, scale and offset, fields)
+// when `las` holds one per point, else the points written with
+// choose_las_scale(); then the fields of las_extra_fields(), described in
+// the Extra Bytes VLR.
+template <class Point>
+void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, const Las_input& las,
+                           const std::vector<bool>& outlier, const std::vector<Layer>& layers)
+{
+  Las_output_header header;
+  std::vector<std::string> labels;
+  for(const Layer& layer : layers)
+    labels.push_back(layer.label);
+  header.extra = las_extra_fields(labels);
+  const bool from_las = las.present && las.records.size() == points.size();
+  auto record = [&](std::size_t i) {
+    if(from_las)
+      return las.records[i];
+    Las_record r;
+    const double xyz[3] = {double(points[i].x()), double(points[i].y()), double(points[i].z())};
+    quantize_las(header, xyz, r);
+    r.return_number = r.number_of_returns = 1;
+    return r;
+  };
+  if(from_las)
+  {
+    const Las_header& in = las.header;
+    header.rgb = las_detail::has_rgb(in.point_format);
+    std::copy(in.scale, in.scale + 3, header.scale);
+    std::copy(in.offset, in.offset + 3, header.offset);
+    header.file_source_id = in.file_source_id;
+    header.global_encoding = in.global_encoding;
+    header.creation_day = in.creation_day;
+    header.creation_year = in.creation_year;
+  }
+  else if(!points.empty())
+  {
+    double low[3], high[3];
+    for(int k = 0; k < 3; ++k)
+      low[k] = high[k] = double(points[0][k]);
+    for(const Point& p : points)
+      for(int k = 0; k < 3; ++k)
+      {
+        low[k] = (std::min)(low[k], double(p[k]));
+        high[k] = (std::max)(high[k], double(p[k]));
+      }
+    choose_las_scale(low, high, header);
+  }
+  Las_bounds bounds;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    bounds.add(record(i));
+  bounds.set(header);
+  out << las_header_bytes(header);
+  write_las_point_records(out, points.size(), header, record, outlier, layers);
 }
 
 // The CSV: its header line, then append_csv_rows() for each layer.

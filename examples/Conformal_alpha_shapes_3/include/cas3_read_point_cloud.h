@@ -5,7 +5,9 @@
 // optionally after a first line with the number of points, which must match),
 // .pwn (6 numbers a line), .ply (ASCII or binary, element "vertex" with
 // properties x y z and optionally nx ny nz), .off (the vertices; NOFF gives
-// normals) and .obj (the "v" lines). Normals are returned when the file has
+// normals), .obj (the "v" lines) and .las (LAS 1.0 to 1.4, cas3_las.h: the
+// points a Las_filter keeps, with their records on request; a .laz file is
+// refused with how to decompress it). Normals are returned when the file has
 // them, else the vector is empty. Anything else throws cas3::Read_error with
 // one line naming the file, the line (or vertex) and what is wrong:
 // malformed numbers, wrong column counts, truncated files, headers that
@@ -20,6 +22,8 @@
 // reports errors on std::cerr without the file's name, and reads no .obj.
 #ifndef CAS3_READ_POINT_CLOUD_H
 #define CAS3_READ_POINT_CLOUD_H
+
+#include "cas3_las.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -42,16 +46,22 @@ namespace cas3 {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Read_kernel;
 
+// What a LAS input adds: its header, the filters and what they kept, and
+// the records of the points kept (when asked for), in file order.
+struct Las_input
+{
+  bool present = false;
+  Las_header header;
+  Las_filter filter;
+  Las_filter_counts counts;
+  std::vector<Las_record> records;  // one per point, or empty
+};
+
 struct Point_cloud
 {
   std::vector<Read_kernel::Point_3> points;
   std::vector<Read_kernel::Vector_3> normals;  // empty when the file has none
-};
-
-// The one exception type of the reader: what() is one line.
-struct Read_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
+  Las_input las;                               // for a .las file
 };
 
 namespace read_detail {
@@ -490,6 +500,45 @@ inline Point_cloud read_ply(const std::string& text, const std::string& name)
   return cloud;
 }
 
+// The points of `file` that `filter` keeps (and their records, with
+// `keep_records`), read a chunk at a time.
+inline Point_cloud read_las(Las_file& file, const Las_filter& filter, bool keep_records)
+{
+  Point_cloud cloud;
+  cloud.las.present = true;
+  cloud.las.header = file.header();
+  cloud.las.filter = filter;
+  const std::vector<bool> class_kept = las_classes_kept(filter);
+  std::vector<Las_record> chunk;
+  const std::uint64_t n = file.number_of_points();
+  if(!filter.active())
+  {
+    cloud.points.reserve(std::size_t(n));
+    if(keep_records)
+      cloud.las.records.reserve(std::size_t(n));
+  }
+  for(std::uint64_t first = 0; first < n; first += chunk.size())
+  {
+    file.read(first, std::uint64_t(1) << 16, chunk);
+    for(std::size_t i = 0; i < chunk.size(); ++i)
+    {
+      if(!keep_las_record(chunk[i], filter, class_kept, cloud.las.counts))
+        continue;
+      const std::array<double, 3> p = file.position(chunk[i]);
+      if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+        throw Read_error(file.name() + ": point " + std::to_string(first + i)
+                         + ": coordinate is NaN or infinite (scale and offset beyond double's range)");
+      cloud.points.emplace_back(p[0], p[1], p[2]);
+      if(keep_records)
+        cloud.las.records.push_back(chunk[i]);
+    }
+  }
+  if(cloud.points.empty() && n > 0)
+    throw Read_error(las_input_summary(file.name(), file.header(), filter, cloud.las.counts)
+                     + ": the filters keep no point");
+  return cloud;
+}
+
 inline std::string lower_extension(const std::string& path)
 {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -499,13 +548,24 @@ inline std::string lower_extension(const std::string& path)
 
 } // namespace read_detail
 
+// The input extensions, for messages.
+inline const char* known_extensions() { return "(.xyz, .pwn, .ply, .off, .obj, .las)"; }
+
 // Parses the bytes of a file of format `extension` (".xyz", ".pwn", ".ply",
-// ".off" or ".obj"); `name` prefixes the messages. Throws Read_error.
-inline Point_cloud parse_point_cloud(const std::string& bytes, const std::string& extension, const std::string& name)
+// ".off", ".obj" or ".las"); `name` prefixes the messages. Throws Read_error.
+inline Point_cloud parse_point_cloud(const std::string& bytes, const std::string& extension, const std::string& name,
+                                     const Las_filter& filter = Las_filter(), bool keep_las_records = true)
 {
   using namespace read_detail;
   Point_cloud cloud;
-  if(extension == ".xyz" || extension == ".pwn")
+  if(extension == ".las")
+  {
+    Las_file file(bytes, name);
+    cloud = read_las(file, filter, keep_las_records);
+  }
+  else if(extension == ".laz")
+    throw Las_error(laz_message(name));
+  else if(extension == ".xyz" || extension == ".pwn")
     cloud = read_xyz(bytes, name, extension == ".pwn");
   else if(extension == ".ply")
     cloud = read_ply(bytes, name);
@@ -514,14 +574,17 @@ inline Point_cloud parse_point_cloud(const std::string& bytes, const std::string
   else if(extension == ".obj")
     cloud = read_obj(bytes, name);
   else
-    throw Read_error(name + ": unknown input extension '" + shown(extension) + "' (.xyz, .pwn, .ply, .off, .obj)");
+    throw Read_error(name + ": unknown input extension '" + shown(extension) + "' " + known_extensions());
   if(cloud.points.empty())
     throw Read_error(name + ": the file holds no point");
   return cloud;
 }
 
-// Reads the point cloud in the file `path`. Throws Read_error.
-inline Point_cloud read_point_cloud(const std::string& path)
+// Reads the point cloud in the file `path`; for a LAS file, the points
+// that `filter` keeps, and their records with `keep_las_records`. Throws
+// Read_error.
+inline Point_cloud read_point_cloud(const std::string& path, const Las_filter& filter = Las_filter(),
+                                    bool keep_las_records = true)
 {
   namespace fs = std::filesystem;
   const std::string extension = read_detail::lower_extension(path);
@@ -533,9 +596,20 @@ inline Point_cloud read_point_cloud(const std::string& path)
     throw Read_error(path + ": is a directory, not a point file");
   if(!fs::is_regular_file(status))
     throw Read_error(path + ": is not a regular file");
+  if(extension == ".laz")
+    throw Las_error(laz_message(path));
+  if(extension == ".las")
+  {
+    // read a chunk at a time: the file is never held whole
+    Las_file file(path);
+    Point_cloud cloud = read_detail::read_las(file, filter, keep_las_records);
+    if(cloud.points.empty())
+      throw Read_error(path + ": the file holds no point");
+    return cloud;
+  }
   if(extension != ".xyz" && extension != ".pwn" && extension != ".ply" && extension != ".off" && extension != ".obj")
-    throw Read_error(path + ": unknown input extension '" + read_detail::shown(extension)
-                     + "' (.xyz, .pwn, .ply, .off, .obj)");
+    throw Read_error(path + ": unknown input extension '" + read_detail::shown(extension) + "' "
+                     + known_extensions());
   return parse_point_cloud(read_detail::file_bytes(path), extension, path);
 }
 
