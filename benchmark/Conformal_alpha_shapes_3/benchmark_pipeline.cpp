@@ -1,7 +1,7 @@
 // The default job of the program conformal_curvature, stage by stage, against
 // the Delaunay build of the same points and CGAL jet fitting with 120
 // neighbors: wall and processor time, and peak resident memory from the
-// operating system (issue 12).
+// operating system.
 //
 //   benchmark_pipeline [--sizes 100000,300000,1000000] [--surfaces noisy,clean]
 //                      [--csv FILE] [--time-limit SECONDS] [--jet-max N] [--no-jet]

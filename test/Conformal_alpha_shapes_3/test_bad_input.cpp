@@ -258,8 +258,9 @@ BOOST_AUTO_TEST_CASE(one_far_outlier_is_flagged_and_changes_nothing_else)
   }
 }
 
-// The cases: one stray point at 1e6 collapsed every quantile scale,
-// at 1e20 and 1e200 it emptied part of the surface, at 1e160 it crashed.
+// One stray point beside a sampled sphere, at 1e6, 1e20, 1e160 or 1e200:
+// without the input rules it would collapse every quantile scale, empty part
+// of the surface or overflow the construction.
 BOOST_AUTO_TEST_CASE(one_far_outlier_gives_the_clean_answer_through_the_pipeline)
 {
   const std::vector<Point> clean = sphere();

@@ -410,8 +410,8 @@ BOOST_AUTO_TEST_CASE(a_consumed_analysis_gives_the_same_values)
   BOOST_TEST(consumed.number_of_input_points() == s.points.size());
 }
 
-// The noise_estimate of a larger run (issue 37: tiles take the whole
-// cloud's decisions): given a run's own noise(), a run on the same points,
+// The noise_estimate of a larger run (as tiles take the whole cloud's
+// decisions): given a run's own noise(), a run on the same points,
 // far from the unit size so that the working frame rescales them, gives the
 // same bits in every layer; a spacing twice as large doubles the radius of
 // the "4s" layer; the denoising decision follows the given noise; an
