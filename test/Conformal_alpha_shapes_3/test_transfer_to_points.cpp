@@ -177,6 +177,26 @@ BOOST_AUTO_TEST_CASE(corner_normals_that_cancel_give_a_corner_value)
   BOOST_TEST(nearest > 0u);
 }
 
+// Made-up values on a mesh of the unit sphere: the radial normal, and
+// k1 = k2 = 1 + (vertex index) / 1000, distinct at every vertex.
+std::vector<CAS3::Vertex_curvature<K> > made_up_values(const Surface_mesh& mesh)
+{
+  std::vector<CAS3::Vertex_curvature<K> > values(mesh.number_of_vertices());
+  for(Surface_mesh::Vertex_index v : mesh.vertices())
+  {
+    const Vector radial = mesh.point(v) - CGAL::ORIGIN;
+    const Vector n = radial / std::sqrt(radial.squared_length());
+    const Vector d1 = CGAL::cross_product(n, Vector(0.3, 0.4, 0.5));
+    const double k = 1 + double(std::size_t(v)) / 1000;
+    CAS3::Vertex_curvature<K>& c = values[std::size_t(v)];
+    c.normal = n;
+    c.principal = CAS3::Principal_curvatures_and_directions<K>{k, k, d1 / std::sqrt(d1.squared_length()),
+                                                               CGAL::cross_product(n, d1) / std::sqrt(d1.squared_length())};
+    c.radius = 0.1;
+  }
+  return values;
+}
+
 // Where the nearest surface point is a vertex without a value (its own fit
 // undefined), the point takes the mean of that vertex's neighbors with
 // values, whichever of the vertex's facets the search named: made-up values
@@ -189,19 +209,7 @@ BOOST_AUTO_TEST_CASE(a_vertex_without_a_value_takes_its_neighbors_mean)
   Surface_mesh mesh;
   auto input_index = mesh.add_property_map<Vertex, std::size_t>("v:input_index").first;
   CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
-  std::vector<CAS3::Vertex_curvature<K> > values(mesh.number_of_vertices());
-  for(Vertex v : mesh.vertices())
-  {
-    const Vector radial = mesh.point(v) - CGAL::ORIGIN;
-    const Vector n = radial / std::sqrt(radial.squared_length());
-    const Vector d1 = CGAL::cross_product(n, Vector(0.3, 0.4, 0.5));
-    const double k = 1 + double(std::size_t(v)) / 1000;
-    CAS3::Vertex_curvature<K>& c = values[std::size_t(v)];
-    c.normal = n;
-    c.principal = CAS3::Principal_curvatures_and_directions<K>{k, k, d1 / std::sqrt(d1.squared_length()),
-                                                               CGAL::cross_product(n, d1) / std::sqrt(d1.squared_length())};
-    c.radius = 0.1;
-  }
+  std::vector<CAS3::Vertex_curvature<K> > values = made_up_values(mesh);
   std::vector<Vertex> cleared;
   for(Vertex v : mesh.vertices())
   {
@@ -254,21 +262,10 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_interpolate_over_their_facet)
   auto input_index = mesh.add_property_map<Vertex, std::size_t>("v:input_index").first;
   CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
   cas3_test::remove_cap_above(mesh, 0.8);
-  std::vector<CAS3::Vertex_curvature<K> > values(mesh.number_of_vertices());
+  const std::vector<CAS3::Vertex_curvature<K> > values = made_up_values(mesh);
   std::vector<double> vertex_values;
-  for(Vertex v : mesh.vertices())
-  {
-    const Vector radial = mesh.point(v) - CGAL::ORIGIN;
-    const Vector n = radial / std::sqrt(radial.squared_length());
-    const Vector d1 = CGAL::cross_product(n, Vector(0.3, 0.4, 0.5));
-    const double k = 1 + double(std::size_t(v)) / 1000;
-    CAS3::Vertex_curvature<K>& c = values[std::size_t(v)];
-    c.normal = n;
-    c.principal = CAS3::Principal_curvatures_and_directions<K>{k, k, d1 / std::sqrt(d1.squared_length()),
-                                                               CGAL::cross_product(n, d1) / std::sqrt(d1.squared_length())};
-    c.radius = 0.1;
+  for(const CAS3::Vertex_curvature<K>& c : values)
     vertex_values.push_back(c.mean_curvature());
-  }
   std::sort(vertex_values.begin(), vertex_values.end());
   std::vector<std::vector<CAS3::Vertex_curvature<K> > > layers(1, values);
   std::vector<CAS3::Point_curvature<K> > out(pts.size());
