@@ -755,14 +755,6 @@ void evaluate_scan(const std::string& name, const std::string& file, const Optio
     const Layer* best_layer = nullptr;
     for(const Layer& layer : layers)
     {
-      if(o.calibration)
-      {
-        const Calibration c = calibration(layer, truth, judge);
-        std::printf("calibration %-10s %6zu %5s %-5s H within 2 sigma %5.1f%%  K %5.1f%%  median sigma/error H %5.2f"
-                    "  K %5.2f  top-10%% sigma error ratio %5.2f  median sigma/|H| %7.3f\n",
-                    names[t].c_str(), s.points.size(), noise_label(noise).c_str(), layer.label.c_str(),
-                    100 * c.H_within, 100 * c.K_within, c.H_ratio, c.K_ratio, c.ranking, c.relative);
-      }
       const Accuracy a = accuracy(layer.normal, layer.H, layer.K, all, truth, judge);
       row.layers += (row.layers.empty() ? "" : " ") + layer.label + ":" + percent(a.orientation);
       if(row.best.empty() || a.orientation > row.orientation)

@@ -152,6 +152,14 @@ inline double fit_noise(const Quadric_fit_error& e, double sample_noise)
   return std::sqrt(sample_noise * sample_noise + e.noise * e.noise);
 }
 
+// Below this many sample spacings, the curvature's error due to the
+// sample's noise grows more slowly than independent noise would make it
+// (as 1 / r^2 rather than 1 / r^3): the pipeline's jets smooth the noisy
+// points over a few spacings, and a fit smaller than that sees a smooth
+// field. Measured on analytic surfaces under noise (the manual, section
+// "Uncertainty").
+constexpr double smoothed_noise_reach_in_spacings = 5.5;
+
 // A fit's curvature and radius for bias_rates().
 struct Radius_sample
 {
@@ -199,14 +207,17 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
 constexpr double uncertainty_noise_factor = 1;
 constexpr double uncertainty_bias_factor = 1;
 
-// The uncertainty of a fit at radius `radius` whose bias grows at `rates`.
+// The uncertainty of a fit at radius `radius` whose bias grows at `rates`;
+// the sample's noise counts at radii below `smoothed_reach` (0: none) as
+// smoothed_noise_reach_in_spacings says.
 inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, const Bias_rates& rates,
-                                            double sample_noise)
+                                            double sample_noise, double smoothed_reach = 0)
 {
   Estimate_uncertainty u;
   if(!(e.per_noise > 0))
     return u;
-  const double noise = uncertainty_noise_factor * fit_noise(e, sample_noise);
+  const double below = smoothed_reach > 0 ? (std::min)(1., (radius / smoothed_reach) * (radius / smoothed_reach)) : 1.;
+  const double noise = uncertainty_noise_factor * fit_noise(e, below * sample_noise);
   const double r4 = radius * radius * radius * radius, b2 = uncertainty_bias_factor * uncertainty_bias_factor;
   const double se_H = noise * e.per_noise, se_K = noise * e.per_noise_K;
   u.H = std::sqrt(se_H * se_H + b2 * rates.squared_H * r4);
@@ -260,7 +271,8 @@ public:
   Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                        const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
                        double sample_noise, double sample_spacing, const std::vector<std::uint64_t>* center_keys)
-    : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator), m_sample_noise(sample_noise)
+    : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator), m_sample_noise(sample_noise),
+      m_smoothed_reach(sample_spacing > 0 ? smoothed_noise_reach_in_spacings * sample_spacing : 0.)
   {
     for(const Neighborhood_rule& rule : rules)
     {
@@ -601,7 +613,7 @@ private:
         {
           const Candidate_fit& chosen = choose_by_least_squared_error(ws.candidates, m_sample_noise);
           out[r] = Vertex_estimate{chosen.curvature, chosen.radius,
-                                   fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise)};
+                                   fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothed_reach)};
         }
       }
       else if(rule.radius > 0)
@@ -609,7 +621,7 @@ private:
         const Radius_fit& q = ws.fits[radius_level(rule.radius)];
         if(q.defined)
           out[r] = Vertex_estimate{q.curvature, rule.radius,
-                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise)};
+                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise, m_smoothed_reach)};
         else
           to_widen.push_back(r);
       }
@@ -627,7 +639,7 @@ private:
         Radius_fit q;
         fit(f, ends[0], radius, radius, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise)};
+          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise, m_smoothed_reach)};
       }
   }
 
@@ -662,7 +674,7 @@ private:
         Radius_fit q;
         fit(f, ends[ring], reach, length, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, Bias_rates(), m_sample_noise)};
+          out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, Bias_rates(), m_sample_noise, m_smoothed_reach)};
       }
     }
   }
@@ -672,6 +684,7 @@ private:
   std::vector<Neighborhood_rule> m_rules;
   Curvature_estimator m_estimator;
   double m_sample_noise;           // of the points before any denoising, model units; 0 when unknown
+  double m_smoothed_reach;         // see fit_uncertainty(); 0 when the spacing is unknown
   std::vector<double> m_radii;     // every rule's radii, increasing
   std::vector<char> m_with_error;  // by radius: whether its fits compute their error
   std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
