@@ -253,9 +253,15 @@ py::dict layer_arrays(const std::vector<Value>& values)
   double *pn = normal.mutable_data(), *p1 = d1.mutable_data(), *p2 = d2.mutable_data();
   double *pH = H.mutable_data(), *pK = Kg.mutable_data(), *pk1 = k1.mutable_data(), *pk2 = k2.mutable_data();
   double* pr = radius.mutable_data();
+  py::array_t<double> H_sigma = new_array<double>(n), K_sigma = new_array<double>(n),
+                      normal_sigma = new_array<double>(n);
+  double *psH = H_sigma.mutable_data(), *psK = K_sigma.mutable_data(), *psn = normal_sigma.mutable_data();
   for(std::size_t i = 0; i < n; ++i)
   {
     const Value& c = values[i];
+    psH[i] = c.uncertainty.mean_curvature;
+    psK[i] = c.uncertainty.gaussian_curvature;
+    psn[i] = c.uncertainty.normal_degrees;
     put_triple(pn, i, c.normal);
     put_triple(p1, i, c.principal.max_direction);
     put_triple(p2, i, c.principal.min_direction);
@@ -282,6 +288,9 @@ py::dict layer_arrays(const std::vector<Value>& values)
   layer["d1"] = d1;
   layer["d2"] = d2;
   layer["radius"] = radius;
+  layer["H_sigma"] = H_sigma;
+  layer["K_sigma"] = K_sigma;
+  layer["normal_sigma"] = normal_sigma;
   if constexpr(of_points)
   {
     py::array_t<double> distance = new_array<double>(n);
@@ -580,8 +589,9 @@ std::vector<cas3::Layer> layers_from_python(const py::list& layers, std::size_t 
     // the columns in the file's order (cas3::Layer::value_names())
     const char* const triples[3] = {"normal", "d1", "d2"};
     const int triple_column[3] = {0, 7, 10};
-    const char* const scalars[6] = {"H", "K", "k1", "k2", "radius", "distance"};
-    const int scalar_column[6] = {3, 4, 5, 6, 13, 14};
+    const char* const scalars[9] = {"H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma",
+                                    "normal_sigma"};
+    const int scalar_column[9] = {3, 4, 5, 6, 13, 14, 15, 16, 17};
     for(int t = 0; t < 3; ++t)
     {
       const Doubles a = d[triples[t]].cast<Doubles>();
@@ -592,8 +602,14 @@ std::vector<cas3::Layer> layers_from_python(const py::list& layers, std::size_t 
           layer.values[i * cas3::Layer::number_of_values + std::size_t(triple_column[t] + j)] =
             float(a.data()[3 * i + std::size_t(j)]);
     }
-    for(int s = 0; s < 6; ++s)
+    for(int s = 0; s < 9; ++s)
     {
+      if(s >= 6 && !d.contains(scalars[s]))  // layers without uncertainties (LAS output)
+      {
+        for(std::size_t i = 0; i < n; ++i)
+          layer.values[i * cas3::Layer::number_of_values + std::size_t(scalar_column[s])] = std::nanf("");
+        continue;
+      }
       const Doubles a = d[scalars[s]].cast<Doubles>();
       if(std::size_t(a.size()) != n)
         throw py::value_error(what + ": " + scalars[s] + " has not one value per point");

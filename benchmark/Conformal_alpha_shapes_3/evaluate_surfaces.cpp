@@ -79,6 +79,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
@@ -98,6 +99,7 @@ struct Layer
   bool automatic = false;
   std::vector<Vector> normal;  // per input point; NaN where undefined
   std::vector<double> H, K;    // per input point; NaN where undefined
+  std::vector<double> H_sigma, K_sigma;  // their standard uncertainties
   std::vector<double> radius;  // per input point, in measured spacings; NaN where undefined
   int components = -1;         // surface components, -1 when not reported
   std::vector<int> piece;      // per input point, the connected piece of the surface its vertex is on; -1 off it
@@ -144,12 +146,17 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
       for(Analysis::Surface_vertex v : CGAL::vertices_around_face(surface.halfedge(f), surface))
         piece[input_index[v]] = int(get(face_piece, f));
   }
-  std::vector<Layer> layers;
+  // all the neighborhoods in one call, as the program's job runs them
+  std::vector<CAS3::Neighborhood> all;
   for(const std::string& item : neighborhoods)
+    all.push_back(neighborhood_of(item));
+  const std::vector<std::vector<CAS3::Point_curvature<Kernel> > > values = analysis.estimate_curvatures(surface, all);
+  std::vector<Layer> layers;
+  for(std::size_t k = 0; k < neighborhoods.size(); ++k)
   {
-    const CAS3::Neighborhood neighborhood = neighborhood_of(item);
-    const std::vector<CAS3::Point_curvature<Kernel> > per_point =
-      analysis.estimate_curvatures(surface, {neighborhood}).front();
+    const std::string& item = neighborhoods[k];
+    const CAS3::Neighborhood& neighborhood = all[k];
+    const std::vector<CAS3::Point_curvature<Kernel> >& per_point = values[k];
     Layer layer;
     layer.label = item;
     layer.automatic = neighborhood.kind() == CAS3::Neighborhood::AUTOMATIC;
@@ -161,6 +168,8 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
       layer.normal.push_back(ok ? p.normal : Vector(nan_value, nan_value, nan_value));
       layer.H.push_back(ok ? double(p.mean_curvature) : nan_value);
       layer.K.push_back(ok ? double(p.gaussian_curvature) : nan_value);
+      layer.H_sigma.push_back(ok ? double(p.uncertainty.mean_curvature) : nan_value);
+      layer.K_sigma.push_back(ok ? double(p.uncertainty.gaussian_curvature) : nan_value);
       layer.radius.push_back(ok && spacing > 0 ? p.radius / spacing : nan_value);
     }
     layers.push_back(std::move(layer));
@@ -239,6 +248,59 @@ Accuracy accuracy(const std::vector<Vector>& normal, const std::vector<double>& 
   a.K_med = quantile(eK, 0.5);
   a.K_p90 = quantile(eK, 0.9);
   return a;
+}
+
+// How the reported uncertainties match the errors of a layer: the shares
+// of covered points whose H (K) error is within 2 sigma, the ratio of the
+// median sigma to the median absolute error, the ratio of the median H
+// error of the 10% of points of largest relative sigma (sigma / |H|) to
+// that of the others, and the median relative sigma of H.
+struct Calibration
+{
+  double H_within = nan_value, K_within = nan_value, H_ratio = nan_value, K_ratio = nan_value;
+  double ranking = nan_value, relative = nan_value;
+};
+
+Calibration calibration(const Layer& layer, const Sample& truth, const Judge& judge)
+{
+  Calibration c;
+  if(truth.mean_curvature.empty() || judge.planar)
+    return c;
+  std::vector<double> eH, eK, sH, sK, relative;
+  std::size_t H_in = 0, K_in = 0;
+  std::vector<std::pair<double, double> > by_relative;  // (relative sigma, H error)
+  for(std::size_t i = 0; i < layer.H.size(); ++i)
+  {
+    if(!std::isfinite(layer.H[i]) || !std::isfinite(layer.H_sigma[i]) || !std::isfinite(layer.normal[i].x()))
+      continue;
+    // the sign that agrees with the truth (open surfaces may be flipped)
+    const double sign = judge.flip_allowed && layer.normal[i] * truth.normals[i] < 0 ? -1 : 1;
+    const double e_H = std::abs(sign * layer.H[i] - truth.mean_curvature[i]);
+    const double e_K = std::abs(layer.K[i] - truth.gaussian_curvature[i]);
+    eH.push_back(e_H);
+    eK.push_back(e_K);
+    sH.push_back(layer.H_sigma[i]);
+    sK.push_back(layer.K_sigma[i]);
+    H_in += e_H <= 2 * layer.H_sigma[i] ? 1 : 0;
+    K_in += e_K <= 2 * layer.K_sigma[i] ? 1 : 0;
+    const double r = layer.H_sigma[i] / (std::abs(layer.H[i]) + 1e-300);
+    relative.push_back(r);
+    by_relative.emplace_back(r, e_H / judge.H_scale);
+  }
+  if(eH.empty())
+    return c;
+  c.H_within = double(H_in) / double(eH.size());
+  c.K_within = double(K_in) / double(eK.size());
+  c.H_ratio = quantile(sH, 0.5) / quantile(eH, 0.5);
+  c.K_ratio = quantile(sK, 0.5) / quantile(eK, 0.5);
+  c.relative = quantile(relative, 0.5);
+  std::sort(by_relative.begin(), by_relative.end());
+  const std::size_t top = by_relative.size() - by_relative.size() / 10;
+  std::vector<double> rest, largest;
+  for(std::size_t k = 0; k < by_relative.size(); ++k)
+    (k < top ? rest : largest).push_back(by_relative[k].second);
+  c.ranking = quantile(largest, 0.5) / quantile(rest, 0.5);
+  return c;
 }
 
 // ---------------------------------------------------------------------------
@@ -364,7 +426,7 @@ struct Options
   std::vector<std::size_t> sizes = {20000, 100000};
   std::vector<double> noises = {0, 0.1, 0.3};
   std::vector<std::string> neighborhoods = {"auto", "k1", "k2", "k3", "2s", "4s", "8s", "16s"};
-  bool large = false, normals = false, jet = true;
+  bool large = false, normals = false, jet = true, calibration = false;
   double scale_factor = 1;
   std::size_t jet_samples = 5000;
   std::string data = CAS3_TEST_DATA;
@@ -499,6 +561,14 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
     double best = std::numeric_limits<double>::infinity();
     for(const Layer& layer : layers)
     {
+      if(o.calibration)
+      {
+        const Calibration c = calibration(layer, truth, judge);
+        std::printf("calibration %-10s %6zu %5s %-5s H within 2 sigma %5.1f%%  K %5.1f%%  median sigma/error H %5.2f"
+                    "  K %5.2f  top-10%% sigma error ratio %5.2f  median sigma/|H| %7.3f\n",
+                    names[t].c_str(), s.points.size(), noise_label(noise).c_str(), layer.label.c_str(),
+                    100 * c.H_within, 100 * c.K_within, c.H_ratio, c.K_ratio, c.ranking, c.relative);
+      }
       const Accuracy a = accuracy(layer.normal, layer.H, layer.K, all, truth, judge);
       row.layers += (row.layers.empty() ? "" : " ") + layer.label + ":" + error(a.H_med, planar);
       if(row.components < 0)
@@ -769,13 +839,14 @@ int main(int argc, char* argv[])
       else if(arg == "--large") o.large = true;
       else if(arg == "--normals") o.normals = true;
       else if(arg == "--no-jet") o.jet = false;
+      else if(arg == "--calibration") o.calibration = true;
       else if(arg == "--check-truth") return check_truth() ? EXIT_SUCCESS : EXIT_FAILURE;
       else if(arg == "--help")
       {
         std::cout << "evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large] [--noise 0,0.1,0.3]\n"
                      "                  [--neighborhoods auto,k1,k2,k3,2s,4s,8s,16s] [--rings 1,2,3] [--normals]\n"
                      "                  [--scale-factor 1] [--jet-samples 5000] [--no-jet] [--data DIR] [--csv FILE]\n"
-                     "                  [--write-points DIR] [--list] [--check-truth]\n"
+                     "                  [--write-points DIR] [--list] [--check-truth] [--calibration]\n"
                      "neighborhoods: k2 ring size, auto, 4s spacings, 0.01 model units (see evaluate_surfaces.cpp)\n";
         return EXIT_SUCCESS;
       }

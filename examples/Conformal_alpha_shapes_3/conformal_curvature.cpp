@@ -108,6 +108,7 @@ int run(const cas3::Curvature_options& o)
     summary << cas3::las_input_summary(o.input, cloud.las.header, cloud.las.filter, cloud.las.counts) << "\n";
   summary << cas3::summary_head(o.input, *analysis);
   std::vector<cas3::Layer> layers;
+  std::vector<std::string> uncertainty;  // per layer, for the summary's last line
   for(const CAS3::Scale& scale : o.scales)
   {
     const double a = analysis->scale_value(scale);
@@ -129,6 +130,7 @@ int run(const cas3::Curvature_options& o)
         output.check(csv);
       }
       summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
+      uncertainty.push_back(cas3::summary_uncertainty_item(layer.label, cas3::median_relative_uncertainty(curvatures)));
       progress("layer " + layer.label + ": curvature estimated");
       layers.push_back(std::move(layer));
     };
@@ -154,6 +156,7 @@ int run(const cas3::Curvature_options& o)
   if(o.csv)
     output.close(csv);
   output.commit();
+  summary << cas3::summary_uncertainty_line(uncertainty);
   if(!o.quiet)
     std::cout << summary.str() << "results in " << o.output << "\n";
   return EXIT_SUCCESS;

@@ -179,6 +179,13 @@ class Layer:
             Only for point layers (``None`` for a mesh).
         distance: (N,) float64, from the point to the surface point whose
             values it took (0 on its own vertex). Point layers only.
+        H_sigma, K_sigma, normal_sigma: (N,) float64, the standard
+            uncertainties of H and K (same units) and of the normal's
+            direction (degrees): from the fit's residuals, its neighbors, the
+            sample's noise and the bias of its radius, grown with
+            ``distance`` (the manual, section "Uncertainty"); NaN where
+            unknown. ``np.abs(layer.H) > 2 * layer.H_sigma`` keeps the values
+            that their uncertainty does not swamp.
         name: the layer's name, as the program names it ("rauto", "r4s",
             "25pct_k2"); a: the scale of its surface; description: what the
             layer is, as the program's file headers say; surface: a dict of
@@ -190,7 +197,8 @@ class Layer:
             normals, their normals pointing to both sides alike).
     """
 
-    _arrays = ("normal", "H", "K", "k1", "k2", "d1", "d2", "radius", "source", "distance")
+    _arrays = ("normal", "H", "K", "k1", "k2", "d1", "d2", "radius", "source", "distance", "H_sigma", "K_sigma",
+               "normal_sigma")
 
     def __init__(self, values):
         for key in self._arrays:
@@ -249,6 +257,22 @@ class Layer:
         return colors
 
 
+# A layer is noise-dominated when the median over its points of sigma_H / |H|
+# exceeds this (as the program's summary says).
+NOISE_DOMINATED_RELATIVE_UNCERTAINTY = 0.25
+
+
+def _median_relative_uncertainty(layer):
+    if layer.H_sigma is None:
+        return float("nan")
+    with np.errstate(divide="ignore", invalid="ignore"):
+        relative = layer.H_sigma / np.abs(layer.H)
+    relative = relative[~np.isnan(relative)]
+    if not len(relative):
+        return float("nan")
+    return float(np.partition(relative, len(relative) // 2)[len(relative) // 2])
+
+
 class Result:
     """What ``multiscale_curvatures`` returns.
 
@@ -286,6 +310,16 @@ class Result:
                               "one side as to the other (unoriented normals?); those sheets are oriented as without "
                               "normals", stacklevel=3)
                 break
+
+    def uncertainty_summary(self):
+        """Per layer name, as the program's summary gives it: ``(relative, noise_dominated)``, the median
+        over the points of sigma_H / |H| and whether it exceeds ``NOISE_DOMINATED_RELATIVE_UNCERTAINTY``
+        (the layer's values are then mostly noise)."""
+        out = {}
+        for name in self.layers:
+            relative = _median_relative_uncertainty(self._layers[name])
+            out[name] = (relative, bool(relative > NOISE_DOMINATED_RELATIVE_UNCERTAINTY))
+        return out
 
     def __getitem__(self, name):
         try:

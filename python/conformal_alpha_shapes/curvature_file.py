@@ -23,9 +23,10 @@ from . import output_files
 __all__ = ["read_values", "write_double_ply", "LAYER_FIELDS"]
 
 LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",
-                "radius", "distance")
+                "radius", "distance", "H_sigma", "K_sigma", "normal_sigma")
 _TRIPLES = {"normal": ("nx", "ny", "nz"), "d1": ("d1x", "d1y", "d1z"), "d2": ("d2x", "d2y", "d2z")}
-_SCALARS = ("H", "K", "k1", "k2", "radius", "distance")
+_SCALARS = ("H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma", "normal_sigma")
+_OPTIONAL = ("H_sigma", "K_sigma", "normal_sigma")
 _RESULT_COMMENT = "conformal_alpha_shapes result "
 _PLY_TYPES = {
     "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
@@ -110,14 +111,16 @@ def read_values(path):
     labels = list(described) or [name[len("source_"):] for name in dtype.names if name.startswith("source_")]
     layers = []
     for label in labels:
-        wanted = [f"{field}_{label}" for field in LAYER_FIELDS] + [f"source_{label}"]
+        # files written before the uncertainties were added have none: NaN
+        wanted = [f"{field}_{label}" for field in LAYER_FIELDS if field not in _OPTIONAL] + [f"source_{label}"]
         absent = [name for name in wanted if name not in names]
         if absent:
             raise ValueError(f"{path}: layer {label} has no {', '.join(absent)}")
         values = {key: np.stack([records[f"{field}_{label}"] for field in fields], axis=1).astype(np.float64)
                   for key, fields in _TRIPLES.items()}
         for key in _SCALARS:
-            values[key] = records[f"{key}_{label}"].astype(np.float64)
+            name = f"{key}_{label}"
+            values[key] = records[name].astype(np.float64) if name in names else np.full(count, np.nan)
         values["source"] = records[f"source_{label}"].astype(np.uint8)
         values["name"] = label
         values["description"] = described.get(label)

@@ -306,7 +306,7 @@ def atomic_write(path, write):
 
 
 _LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",
-                 "radius", "distance")
+                 "radius", "distance", "H_sigma", "K_sigma", "normal_sigma")
 
 
 def save_array(path, values):
@@ -417,7 +417,7 @@ def merge_parts_las(path, merged_ply, layers, cloud):
         for key, fields in (("normal", ("nx", "ny", "nz")), ("d1", ("d1x", "d1y", "d1z")),
                             ("d2", ("d2x", "d2y", "d2z"))):
             values[key] = np.column_stack([block[f"{f}_{name}"] for f in fields]).astype(np.float64)
-        for key in ("H", "K", "k1", "k2", "radius", "distance"):
+        for key in ("H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma", "normal_sigma"):
             values[key] = block[f"{key}_{name}"].astype(np.float64)
         values["source"] = np.ascontiguousarray(block[f"source_{name}"])
         return values

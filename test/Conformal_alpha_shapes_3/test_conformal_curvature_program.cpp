@@ -177,7 +177,7 @@ BOOST_AUTO_TEST_CASE(bunny_default_run)
   const std::vector<std::string> expected = {"point_index", "x", "y", "z", "a", "rings", "on_surface",
                                              "nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z",
                                              "d2x", "d2y", "d2z", "outlier", "neighborhood", "radius",
-                                             "source", "distance"};
+                                             "source", "distance", "H_sigma", "K_sigma", "normal_sigma"};
   BOOST_TEST(csv.header == expected, boost::test_tools::per_element());
   BOOST_REQUIRE_EQUAL(csv.rows.size(), 5000u * layers.size());
   for(std::size_t l = 0; l < layers.size(); ++l)
@@ -194,7 +194,7 @@ BOOST_AUTO_TEST_CASE(bunny_default_run)
   BOOST_REQUIRE(CGAL::IO::read_PLY(in, mesh));
   BOOST_TEST(mesh.number_of_faces() > 0u);
   for(const std::string& layer : layers)
-    for(const char* value : {"H_", "K_", "k1_", "k2_", "nx_", "radius_"})
+    for(const char* value : {"H_", "K_", "k1_", "k2_", "nx_", "radius_", "H_sigma_", "K_sigma_", "normal_sigma_"})
       BOOST_TEST((mesh.property_map<Mesh::Vertex_index, float>("v:" + std::string(value) + layer).second));
   BOOST_TEST((mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").second));
 }

@@ -554,10 +554,10 @@ BOOST_AUTO_TEST_CASE(output_keeps_the_input_fields_and_names_the_extra_bytes)
     BOOST_REQUIRE(extra[0] == (i == 3 ? 1 : 0));
     float h = 0;
     std::memcpy(&h, extra + 1 + 3 * 4, 4);
-    BOOST_REQUIRE(h == layers[0].values[i * 15 + 3]);
+    BOOST_REQUIRE(h == layers[0].values[i * cas3::Layer::number_of_values + 3]);
     BOOST_REQUIRE(std::uint8_t(extra[1 + 60]) == layers[0].source[i]);
     std::memcpy(&h, extra + 1 + 61 + 3 * 4, 4);
-    BOOST_REQUIRE(h == layers[1].values[i * 15 + 3]);
+    BOOST_REQUIRE(h == layers[1].values[i * cas3::Layer::number_of_values + 3]);
   }
 }
 
@@ -571,7 +571,7 @@ BOOST_AUTO_TEST_CASE(output_of_other_points_chooses_a_scale)
     points.emplace_back(512345.678 + 0.731 * i, -3.25 * i, 1e-3 * i * i);
   std::vector<cas3::Layer> layers(1);
   layers[0].label = "r4s";
-  layers[0].values.assign(points.size() * 15, 1.5f);
+  layers[0].values.assign(points.size() * cas3::Layer::number_of_values, 1.5f);
   layers[0].source.assign(points.size(), 0);
   std::ostringstream out;
   cas3::write_point_cloud_las(out, points, cas3::Las_input(), std::vector<bool>(points.size()), layers);

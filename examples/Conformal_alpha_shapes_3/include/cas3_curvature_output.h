@@ -36,11 +36,18 @@ namespace cas3 {
 // cloud file stores them.
 struct Layer
 {
-  static constexpr int number_of_values = 15;
+  static constexpr int number_of_values = 18;
+  // the standard uncertainties of H, K and the normal (degrees) last, so
+  // that the columns before them keep their places
+  static constexpr int H_sigma_column = 15;
+  // the values that the LAS file holds, those before the uncertainties:
+  // its Extra Bytes VLR holds 341 fields, 21 layers of these
+  static constexpr int number_of_las_values = 15;
   static const char* const* value_names()
   {
     static const char* const names[number_of_values] = {"nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y",
-                                                         "d1z", "d2x", "d2y", "d2z", "radius", "distance"};
+                                                         "d1z", "d2x", "d2y", "d2z", "radius", "distance",
+                                                         "H_sigma", "K_sigma", "normal_sigma"};
     return names;
   }
   std::string label;       // the property suffix: layer_label()
@@ -61,7 +68,8 @@ struct Layer
                                           c.gaussian_curvature, p.max_curvature, p.min_curvature,
                                           p.max_direction.x(), p.max_direction.y(), p.max_direction.z(),
                                           p.min_direction.x(), p.min_direction.y(), p.min_direction.z(),
-                                          c.radius, c.distance};
+                                          c.radius, c.distance, c.uncertainty.mean_curvature,
+                                          c.uncertainty.gaussian_curvature, c.uncertainty.normal_degrees};
       for(int j = 0; j < number_of_values; ++j)
         values[i * number_of_values + std::size_t(j)] = float(v[j]);
       source[i] = std::uint8_t(c.source);
@@ -120,11 +128,12 @@ inline void prefetch(const void* p)
 #endif
 }
 
-// The same for the values of point i in `layer` (60 bytes: up to two lines).
+// The same for the values of point i in `layer` (72 bytes: up to three lines).
 inline void prefetch_values(const Layer& layer, std::size_t i)
 {
   const float* row = layer.values.data() + i * Layer::number_of_values;
   prefetch(row);
+  prefetch(row + Layer::number_of_values / 2);
   prefetch(row + Layer::number_of_values - 1);
 }
 
@@ -161,9 +170,9 @@ public:
     std::memcpy(m_p, bytes, n);
     m_p += n;
   }
-  void put_values(const Layer& layer, std::size_t i)
+  void put_values(const Layer& layer, std::size_t i, int count = Layer::number_of_values)
   {
-    for(int j = 0; j < Layer::number_of_values; ++j)
+    for(int j = 0; j < count; ++j)
       put(layer.values[i * Layer::number_of_values + std::size_t(j)]);
   }
   const char* position() const { return m_p; }
@@ -313,7 +322,7 @@ void write_surface(std::ostream& out, const Surface& surface, const std::vector<
 // (32 characters) or there are more than 21 layers.
 inline std::vector<Las_extra_field> las_extra_fields(const std::vector<std::string>& labels)
 {
-  static const char* const meaning[Layer::number_of_values] = {
+  static const char* const meaning[Layer::number_of_las_values] = {
     "unit normal, x", "unit normal, y", "unit normal, z", "mean curvature H", "Gaussian curvature K",
     "principal curvature k1 (max)", "principal curvature k2 (min)", "direction of k1, x", "direction of k1, y",
     "direction of k1, z", "direction of k2, x", "direction of k2, y", "direction of k2, z",
@@ -321,7 +330,7 @@ inline std::vector<Las_extra_field> las_extra_fields(const std::vector<std::stri
   std::vector<Las_extra_field> fields = {{"outlier", "1: isolated far outlier", false}};
   for(const std::string& label : labels)
   {
-    for(int j = 0; j < Layer::number_of_values; ++j)
+    for(int j = 0; j < Layer::number_of_las_values; ++j)
       fields.push_back({std::string(Layer::value_names()[j]) + "_" + label, meaning[j], true});
     fields.push_back({"source_" + label, "0 own vertex, 1 nearest, 2 none", false});
   }
@@ -346,7 +355,7 @@ void write_las_point_records(std::ostream& out, std::size_t n, const Las_output_
     row.put(std::uint8_t(outlier[i] ? 1 : 0));
     for(const Layer& layer : layers)
     {
-      row.put_values(layer, i);
+      row.put_values(layer, i, Layer::number_of_las_values);
       row.put(layer.source[i]);
     }
   });
@@ -412,7 +421,7 @@ void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, 
 inline const char* csv_header()
 {
   return "point_index,x,y,z,a,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,outlier,"
-         "neighborhood,radius,source,distance\n";
+         "neighborhood,radius,source,distance,H_sigma,K_sigma,normal_sigma\n";
 }
 
 // The CSV rows of one layer, a row per input point: the layer's scale `a`,
@@ -452,6 +461,12 @@ void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double
     append(line, c.radius);
     line += ',' + std::to_string(int(c.source)) + ',';
     append(line, c.distance);
+    for(double x : {double(c.uncertainty.mean_curvature), double(c.uncertainty.gaussian_curvature),
+                    double(c.uncertainty.normal_degrees)})
+    {
+      line += ',';
+      append(line, x);
+    }
     line += '\n';
     csv << line;
   }

@@ -64,6 +64,52 @@ std::string summary_row(const std::string& label, double a,
   return row + std::string("  ") + quantiles(H) + "  " + quantiles(K);
 }
 
+// A layer is called noise-dominated when the median over its points of the
+// relative uncertainty of H, sigma_H / |H|, exceeds this: most of its
+// values are then mostly noise (the manual, section "Uncertainty").
+constexpr double noise_dominated_relative_uncertainty = 0.25;
+
+// The median over the points with a value of sigma_H / |H|; NaN without any.
+template <class Kernel>
+double median_relative_uncertainty(const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures)
+{
+  std::vector<double> relative;
+  for(const auto& c : curvatures)
+  {
+    const double r = double(c.uncertainty.mean_curvature) / std::abs(double(c.mean_curvature));
+    if(!std::isnan(r))
+      relative.push_back(r);
+  }
+  if(relative.empty())
+    return std::nan("");
+  const auto median = relative.begin() + std::ptrdiff_t(relative.size() / 2);
+  std::nth_element(relative.begin(), median, relative.end());
+  return *median;
+}
+
+// The summary's part of a layer in the uncertainty line: its label, its
+// median relative uncertainty of H in percent and, above
+// noise_dominated_relative_uncertainty, "noise-dominated".
+inline std::string summary_uncertainty_item(const std::string& label, double relative)
+{
+  char text[96];
+  if(!std::isfinite(relative))
+    std::snprintf(text, sizeof text, "%s -", label.c_str());
+  else
+    std::snprintf(text, sizeof text, "%s %.3g%%%s", label.c_str(), 100 * relative,
+                  relative > noise_dominated_relative_uncertainty ? " noise-dominated" : "");
+  return text;
+}
+
+// The line of the layers' uncertainty items.
+inline std::string summary_uncertainty_line(const std::vector<std::string>& items)
+{
+  std::string line = "uncertainty of H (median sigma/|H|):";
+  for(std::size_t k = 0; k < items.size(); ++k)
+    line += (k == 0 ? " " : ", ") + items[k];
+  return line + "\n";
+}
+
 // The head of the summary: the input and its outliers, the noise and the
 // smoothing, the surface and its orientation, and the header of the rows.
 template <class Kernel>

@@ -51,6 +51,20 @@ struct Principal_curvatures_and_directions
 };
 
 /// \ingroup PkgConformalAlphaShapes3Curvature
+/// The standard uncertainties of an estimate (the manual, section
+/// "Uncertainty"): one standard deviation of the error of `H`, of `K`, and
+/// of the normal's direction in degrees, from the fit's residuals, its
+/// neighbors' count and spread, the sample's noise and the bias that the
+/// radius implies; NaN where unknown (the Euler estimators, undefined values).
+template <typename GT>
+struct Curvature_uncertainty
+{
+  typename GT::FT mean_curvature = std::numeric_limits<double>::quiet_NaN();      ///< of `H`
+  typename GT::FT gaussian_curvature = std::numeric_limits<double>::quiet_NaN();  ///< of `K`
+  typename GT::FT normal_degrees = std::numeric_limits<double>::quiet_NaN();      ///< of the normal, in degrees
+};
+
+/// \ingroup PkgConformalAlphaShapes3Curvature
 /// The curvature at a vertex, as `estimate_vertex_curvatures()` estimates it
 /// for several neighborhoods at once; every number is NaN where it is undefined.
 template <typename GT>
@@ -63,6 +77,8 @@ struct Vertex_curvature
   Principal_curvatures_and_directions<GT> principal;
   /// the radius of the neighborhood of the fit (for rings: the farthest neighbor used)
   typename GT::FT radius = std::numeric_limits<double>::quiet_NaN();
+  /// the standard uncertainties of `H`, `K` and the normal
+  Curvature_uncertainty<GT> uncertainty;
 
   /// the mean curvature `H`
   typename GT::FT mean_curvature() const { return (principal.max_curvature + principal.min_curvature) / 2; }
@@ -96,6 +112,7 @@ struct Curvature_maps
   typedef CGAL::Constant_property_map<vertex_descriptor, Vector_3> Default_normal_map;
   typedef CGAL::Constant_property_map<vertex_descriptor, FT> Default_scalar_map;
   typedef CGAL::Constant_property_map<vertex_descriptor, Principal> Default_principal_map;
+  typedef CGAL::Constant_property_map<vertex_descriptor, Curvature_uncertainty<GT> > Default_uncertainty_map;
   typedef typename CGAL::internal_np::Lookup_named_param_def<
     CGAL::internal_np::vertex_normal_map_t, NamedParameters, Default_normal_map>::type Normal_map;
   typedef typename CGAL::internal_np::Lookup_named_param_def<
@@ -107,6 +124,9 @@ struct Curvature_maps
     Default_principal_map>::type Principal_map;
   typedef typename CGAL::internal_np::Lookup_named_param_def<
     internal_np_cas3::vertex_neighborhood_radius_map_t, NamedParameters, Default_scalar_map>::type Radius_map;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    internal_np_cas3::vertex_curvature_uncertainty_map_t, NamedParameters, Default_uncertainty_map>::type
+    Uncertainty_map;
 
   Curvature_maps(const NamedParameters& np)
     : normal(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_normal_map),
@@ -119,7 +139,10 @@ struct Curvature_maps
         CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_principal_curvatures_and_directions_map),
         Default_principal_map())),
       radius(CGAL::parameters::choose_parameter(
-        CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_neighborhood_radius_map), Default_scalar_map()))
+        CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_neighborhood_radius_map), Default_scalar_map())),
+      uncertainty(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, internal_np_cas3::vertex_curvature_uncertainty_map),
+        Default_uncertainty_map()))
   {}
 
   void write(vertex_descriptor v, const Vertex_curvature<GT>& c) const
@@ -129,6 +152,7 @@ struct Curvature_maps
     put(mean, v, c.mean_curvature());
     put(gaussian, v, c.gaussian_curvature());
     put(principal, v, c.principal);
+    put(uncertainty, v, c.uncertainty);
   }
 
   Normal_map normal;
@@ -136,6 +160,7 @@ struct Curvature_maps
   K_map gaussian;
   Principal_map principal;
   Radius_map radius;
+  Uncertainty_map uncertainty;
 };
 
 template <typename PolygonMesh, typename NamedParameters>
@@ -201,6 +226,9 @@ Vertex_curvature<GT> to_vertex_curvature(const Vertex_estimate& e)
   c.principal = Principal_curvatures_and_directions<GT>{e.curvature.k1, e.curvature.k2, vector(e.curvature.d1),
                                                         vector(e.curvature.d2)};
   c.radius = e.radius;
+  c.uncertainty.mean_curvature = e.uncertainty.H;
+  c.uncertainty.gaussian_curvature = e.uncertainty.K;
+  c.uncertainty.normal_degrees = e.uncertainty.normal * (180 / 3.14159265358979323846);
   return c;
 }
 
@@ -314,6 +342,11 @@ with the wider rings) gets NaN values and is counted in the return value.
   \cgalParamNBegin{vertex_neighborhood_radius_map}
     \cgalParamDescription{output: the radius of the neighborhood used (for rings: the distance of the farthest neighbor used; NaN where the curvature is undefined)}
     \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `GT::FT` as value}
+    \cgalParamDefault{not computed}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_curvature_uncertainty_map}
+    \cgalParamDescription{output: the standard uncertainties of `H`, `K` and the normal (the manual, section "Uncertainty"; NaN where unknown)}
+    \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `Curvature_uncertainty<GT>` as value}
     \cgalParamDefault{not computed}
   \cgalParamNEnd
   \cgalParamNBegin{neighborhood_radii}

@@ -73,6 +73,8 @@ struct Input_units_writer
     c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
     c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
     c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
+    c.uncertainty.mean_curvature = input.curvature_to_input(c.uncertainty.mean_curvature);
+    c.uncertainty.gaussian_curvature = input.gaussian_curvature_to_input(c.uncertainty.gaussian_curvature);
     (*w.layer)[input.input_index[i]] = c;
   }
 };

@@ -37,6 +37,7 @@ enum sample_spacing_t { sample_spacing };
 enum noise_estimate_t { noise_estimate };
 enum fit_center_key_map_t { fit_center_key_map };
 enum orient_each_point_t { orient_each_point };
+enum vertex_curvature_uncertainty_map_t { vertex_curvature_uncertainty_map };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -94,6 +95,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(sample_spacing)
 CGAL_CAS3_ADD_NAMED_PARAMETER(noise_estimate)
 CGAL_CAS3_ADD_NAMED_PARAMETER(fit_center_key_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(orient_each_point)
+CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_curvature_uncertainty_map)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

@@ -70,6 +70,10 @@ struct Point_curvature
   typename Kernel::FT gaussian_curvature = std::numeric_limits<double>::quiet_NaN();
   /// `max_curvature` is `k1`, `max_direction` `d1`; `min_curvature` is `k2`
   Principal_curvatures_and_directions<Kernel> principal;
+  /// the standard uncertainties of `H`, `K` and the normal: those of the
+  /// vertex, or interpolated like the values and grown with `distance` (the
+  /// manual, section "Uncertainty")
+  Curvature_uncertainty<Kernel> uncertainty;
 
   /// whether the values are the point's own vertex's
   bool on_surface() const { return source == SURFACE_VERTEX; }
@@ -110,6 +114,24 @@ void take_other_side(Point_curvature<GT>& c)
   std::swap(p.max_direction, p.min_direction);
 }
 
+// The uncertainty of values taken at the nearest surface point, `distance`
+// away: the point's own place on the surface is unknown within about that
+// distance, over which the values change at a rate that the curvature
+// bounds in scale (|grad H| ~ k^2, the normal turns by k per unit length),
+// added in quadrature.
+template <class GT>
+Curvature_uncertainty<GT> grown_uncertainty(const Curvature_uncertainty<GT>& u, double distance, double k1, double k2)
+{
+  const double k = (std::max)(std::abs(k1), std::abs(k2));
+  const double d = std::isfinite(distance) ? distance : 0.;
+  const double H = d * k * k, K = 2 * k * H, normal = d * k * (180 / 3.14159265358979323846);
+  Curvature_uncertainty<GT> grown;
+  grown.mean_curvature = std::sqrt(u.mean_curvature * u.mean_curvature + H * H);
+  grown.gaussian_curvature = std::sqrt(u.gaussian_curvature * u.gaussian_curvature + K * K);
+  grown.normal_degrees = std::sqrt(u.normal_degrees * u.normal_degrees + normal * normal);
+  return grown;
+}
+
 // The value at the vertex of index `v` of the shape: its own surface
 // vertex's (`own_vertex`), or else interpolated at the nearest point of the
 // surface (`feet`, sorted by vertex), or none.
@@ -139,8 +161,10 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
   if(own_vertex != std::size_t(-1))
   {
     const Vertex_curvature<GT>& e = values[own_vertex];
-    return record(SURFACE_VERTEX, 0, e.radius, e.normal, e.principal.max_curvature, e.principal.min_curvature,
-                  e.principal.max_direction, e.principal.min_direction);
+    Point_curvature<GT> own = record(SURFACE_VERTEX, 0, e.radius, e.normal, e.principal.max_curvature,
+                                     e.principal.min_curvature, e.principal.max_direction, e.principal.min_direction);
+    own.uncertainty = e.uncertainty;
+    return own;
   }
 
   const auto foot = std::lower_bound(feet.begin(), feet.end(), v,
@@ -208,12 +232,29 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
     const auto heaviest = std::max_element(sources.begin(), sources.end(),
                                            [](const auto& x, const auto& y) { return x.second < y.second; });
     const Vertex_curvature<GT>& e = value(heaviest->first);
-    return record(NEAREST_SURFACE_POINT, c.distance, e.radius, e.normal, e.principal.max_curvature,
-                  e.principal.min_curvature, e.principal.max_direction, e.principal.min_direction);
+    Point_curvature<GT> nearest = record(NEAREST_SURFACE_POINT, c.distance, e.radius, e.normal,
+                                         e.principal.max_curvature, e.principal.min_curvature,
+                                         e.principal.max_direction, e.principal.min_direction);
+    nearest.uncertainty = grown_uncertainty(e.uncertainty, c.distance, e.principal.max_curvature,
+                                            e.principal.min_curvature);
+    return nearest;
+  }
+  Curvature_uncertainty<GT> u;
+  u.mean_curvature = u.gaussian_curvature = u.normal_degrees = 0;
+  for(const auto& source : sources)
+  {
+    const double w = source.second / total;
+    const Curvature_uncertainty<GT>& s = value(source.first).uncertainty;
+    u.mean_curvature += w * s.mean_curvature;
+    u.gaussian_curvature += w * s.gaussian_curvature;
+    u.normal_degrees += w * s.normal_degrees;
   }
   n.normalize();
   max_d = (max_d - max_d.dot(n) * n).normalized();
-  return record(NEAREST_SURFACE_POINT, c.distance, r, vector(n), max_k, min_k, vector(max_d), vector(n.cross(max_d)));
+  Point_curvature<GT> nearest =
+    record(NEAREST_SURFACE_POINT, c.distance, r, vector(n), max_k, min_k, vector(max_d), vector(n.cross(max_d)));
+  nearest.uncertainty = grown_uncertainty(u, c.distance, max_k, min_k);
+  return nearest;
 }
 
 // What the transfer reads of the shape, taken from it at once, so that a

@@ -82,13 +82,23 @@ struct Neighborhood_rule
   std::vector<double> candidates;  // increasing; used when not empty
 };
 
+// The standard uncertainties of an estimate: of H, of K, and of the
+// normal's direction (radians); NaN where unknown.
+struct Estimate_uncertainty
+{
+  double H = std::numeric_limits<double>::quiet_NaN();
+  double K = std::numeric_limits<double>::quiet_NaN();
+  double normal = std::numeric_limits<double>::quiet_NaN();
+};
+
 // What one rule gives at one vertex: the curvature and the radius of the
-// neighborhood used, NaN where undefined.
+// neighborhood used, and their uncertainty, NaN where undefined.
 struct Vertex_estimate
 {
   Local_curvature curvature{nan_vector(), std::numeric_limits<double>::quiet_NaN(),
                             std::numeric_limits<double>::quiet_NaN(), nan_vector(), nan_vector()};
   double radius = std::numeric_limits<double>::quiet_NaN();
+  Estimate_uncertainty uncertainty;
 
   bool defined() const { return std::isfinite(curvature.k1) && std::isfinite(curvature.k2); }
 };
@@ -125,6 +135,97 @@ constexpr double large_radius_in_edges = 10.5;
 constexpr double large_radius_in_spacings = 12;
 constexpr double large_radius_per_center_spacing = 7;
 
+// The growth of the fits' bias with the radius at one vertex, from the fits
+// at several radii: H(r) = H0 + c r^2 and K(r) = K0 + c_K r^2, fitted by
+// least squares weighted by the fits' inverse variances; the squares of the
+// rates are taken less their variances (a rate that is noise alone is not
+// a bias), as the automatic rule does (`choose_by_least_squared_error()`).
+struct Bias_rates
+{
+  double squared_H = 0, squared_K = 0;  // c^2 and c_K^2
+};
+
+// The standard deviation of the heights' noise that a fit sees: the
+// sample's (before smoothing) and its own residuals', together.
+inline double fit_noise(const Quadric_fit_error& e, double sample_noise)
+{
+  return std::sqrt(sample_noise * sample_noise + e.noise * e.noise);
+}
+
+// Below this many sample spacings, the curvature's error due to the
+// sample's noise grows more slowly than independent noise would make it
+// (as 1 / r^2 rather than 1 / r^3): the pipeline's jets smooth the noisy
+// points over a few spacings, and a fit smaller than that sees a smooth
+// field. Measured on analytic surfaces under noise (the manual, section
+// "Uncertainty").
+constexpr double smoothed_noise_reach_in_spacings = 5.5;
+
+// A fit's curvature and radius for bias_rates().
+struct Radius_sample
+{
+  double radius, H, K, se_H, se_K;
+};
+
+inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
+{
+  Bias_rates rates;
+  if(samples.size() < 2)
+    return rates;
+  double r_max = 0;
+  for(const Radius_sample& q : samples)
+    r_max = (std::max)(r_max, q.radius);
+  for(int which = 0; which < 2; ++which)
+  {
+    double w0 = 0, w1 = 0, w2 = 0, h0 = 0, h1 = 0;
+    for(const Radius_sample& q : samples)
+    {
+      const double se = which == 0 ? q.se_H : q.se_K, value = which == 0 ? q.H : q.K;
+      const double x = (q.radius / r_max) * (q.radius / r_max);
+      if(!(se > 0) || !std::isfinite(se) || !std::isfinite(value))
+        continue;
+      const double w = 1 / (se * se);
+      w0 += w;
+      w1 += w * x;
+      w2 += w * x * x;
+      h0 += w * value;
+      h1 += w * value * x;
+    }
+    const double det = w0 * w2 - w1 * w1;
+    if(!(det > 1e-12 * w0 * w2))
+      continue;
+    const double c = (w0 * h1 - w1 * h0) / det;  // per (r / r_max)^2
+    const double squared = (std::max)(0., c * c - w0 / det) / (r_max * r_max * r_max * r_max);
+    (which == 0 ? rates.squared_H : rates.squared_K) = squared;
+  }
+  return rates;
+}
+
+// The uncertainty of the noise and of the bias added in quadrature are
+// multiplied by these, measured on analytic surfaces under noise (the
+// manual, "Uncertainty"): the standard errors of the fit assume independent
+// noise, while the smoothed points' noise is correlated over the jets.
+constexpr double uncertainty_noise_factor = 1;
+constexpr double uncertainty_bias_factor = 1;
+
+// The uncertainty of a fit at radius `radius` whose bias grows at `rates`;
+// the sample's noise counts at radii below `smoothed_reach` (0: none) as
+// smoothed_noise_reach_in_spacings says.
+inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, const Bias_rates& rates,
+                                            double sample_noise, double smoothed_reach = 0)
+{
+  Estimate_uncertainty u;
+  if(!(e.per_noise > 0))
+    return u;
+  const double below = smoothed_reach > 0 ? (std::min)(1., (radius / smoothed_reach) * (radius / smoothed_reach)) : 1.;
+  const double noise = uncertainty_noise_factor * fit_noise(e, below * sample_noise);
+  const double r4 = radius * radius * radius * radius, b2 = uncertainty_bias_factor * uncertainty_bias_factor;
+  const double se_H = noise * e.per_noise, se_K = noise * e.per_noise_K;
+  u.H = std::sqrt(se_H * se_H + b2 * rates.squared_H * r4);
+  u.K = std::sqrt(se_K * se_K + b2 * rates.squared_K * r4);
+  u.normal = noise * e.per_noise_normal;
+  return u;
+}
+
 class Curvature_estimation
 {
 public:
@@ -153,6 +254,7 @@ public:
     Prepared prepared;
     std::vector<Radius_fit> fits;  // by radius
     std::vector<Candidate_fit> candidates;
+    std::vector<Radius_sample> samples;
     // the centers around the vertex: where, whether fitted at the
     // current radius and at the previous one, their fits, their weights
     std::vector<Vec3> around;
@@ -169,7 +271,8 @@ public:
   Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                        const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
                        double sample_noise, double sample_spacing, const std::vector<std::uint64_t>* center_keys)
-    : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator), m_sample_noise(sample_noise)
+    : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator), m_sample_noise(sample_noise),
+      m_smoothed_reach(sample_spacing > 0 ? smoothed_noise_reach_in_spacings * sample_spacing : 0.)
   {
     for(const Neighborhood_rule& rule : rules)
     {
@@ -182,10 +285,9 @@ public:
     }
     std::sort(m_radii.begin(), m_radii.end());
     m_radii.erase(std::unique(m_radii.begin(), m_radii.end()), m_radii.end());
-    m_with_error.assign(m_radii.size(), 0);
-    for(const Neighborhood_rule& rule : rules)
-      for(double r : rule.candidates)
-        m_with_error[radius_level(r)] = 1;
+    // every fit's error: the automatic rules weigh it, and every estimate
+    // reports its uncertainty
+    m_with_error.assign(m_radii.size(), 1);
 
     m_fine_levels = m_radii.size();
     const bool at_centers = center_keys && estimator == QUADRIC_FIT && !m_radii.empty();
@@ -486,6 +588,20 @@ private:
     if(m_centers)
       interpolate_large_radii(v, choice_levels < m_radii.size() ? m_fixed_large_levels : m_large_radii.size(), ws);
 
+    // the growth of the bias, from the fits made at this vertex
+    ws.samples.clear();
+    for(std::size_t j = 0; j < m_radii.size(); ++j)
+    {
+      const Radius_fit& q = ws.fits[j];
+      if(!q.defined || !(q.error.per_noise > 0))
+        continue;
+      const double noise = fit_noise(q.error, m_sample_noise);
+      ws.samples.push_back(Radius_sample{m_radii[j], (q.curvature.k1 + q.curvature.k2) / 2,
+                                         q.curvature.k1 * q.curvature.k2, noise * q.error.per_noise,
+                                         noise * q.error.per_noise_K});
+    }
+    const Bias_rates rates = bias_rates(ws.samples);
+
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
     {
@@ -496,14 +612,16 @@ private:
         if(!ws.candidates.empty())
         {
           const Candidate_fit& chosen = choose_by_least_squared_error(ws.candidates, m_sample_noise);
-          out[r] = Vertex_estimate{chosen.curvature, chosen.radius};
+          out[r] = Vertex_estimate{chosen.curvature, chosen.radius,
+                                   fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothed_reach)};
         }
       }
       else if(rule.radius > 0)
       {
         const Radius_fit& q = ws.fits[radius_level(rule.radius)];
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, rule.radius};
+          out[r] = Vertex_estimate{q.curvature, rule.radius,
+                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise, m_smoothed_reach)};
         else
           to_widen.push_back(r);
       }
@@ -519,9 +637,9 @@ private:
         ws.search.balls(m_graph, v, std::vector<double>(1, radius));
         prepare(v, f, radius, 1, ws, ends);
         Radius_fit q;
-        fit(f, ends[0], radius, radius, ws, false, q);
+        fit(f, ends[0], radius, radius, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, radius};
+          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise, m_smoothed_reach)};
       }
   }
 
@@ -554,9 +672,9 @@ private:
           reach = (std::max)(reach, squared_distance[k]);
         reach = std::sqrt(reach);
         Radius_fit q;
-        fit(f, ends[ring], reach, length, ws, false, q);
+        fit(f, ends[ring], reach, length, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, reach};
+          out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, Bias_rates(), m_sample_noise, m_smoothed_reach)};
       }
     }
   }
@@ -566,8 +684,9 @@ private:
   std::vector<Neighborhood_rule> m_rules;
   Curvature_estimator m_estimator;
   double m_sample_noise;           // of the points before any denoising, model units; 0 when unknown
+  double m_smoothed_reach;         // see fit_uncertainty(); 0 when the spacing is unknown
   std::vector<double> m_radii;     // every rule's radii, increasing
-  std::vector<char> m_with_error;  // by radius: a candidate of an automatic rule
+  std::vector<char> m_with_error;  // by radius: whether its fits compute their error
   std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
   // radii [0, m_fine_levels) are fitted at every vertex, the others at
   // the centers

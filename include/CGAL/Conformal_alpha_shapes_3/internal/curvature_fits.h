@@ -183,12 +183,16 @@ inline bool euler_least_squares_fit(const Vec3& n, const std::vector<Neighbor>& 
   return true;
 }
 
-// The uncertainty of a quadric fit's mean curvature, from its residuals.
+// The uncertainty of a quadric fit, from its residuals: the standard
+// errors of its mean and Gaussian curvatures and of its normal's direction
+// per unit of noise of the heights.
 struct Quadric_fit_error
 {
   double noise = 0;               // standard deviation of the heights about the fit (model units)
   double degrees_of_freedom = 0;  // effective: weighted rows less what the fit absorbs
   double per_noise = 0;           // standard error of H per unit of noise
+  double per_noise_K = 0;         // standard error of K per unit of noise
+  double per_noise_normal = 0;    // of the normal's direction (radians, both tangent axes) per unit of noise
 };
 
 // The moments sum x^i y^j, i + j < 7, stored by pairs of consecutive
@@ -462,6 +466,11 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     // sum W r^2 = z' W z - 2 coef' X' W z + coef' M coef
     const Vector6 mean_solution = inverse.col(0) + inverse.col(2);  // M^-1 (1, 0, 1, 0, 0, 0)
     const double spread = mean_solution.dot(squared_weights * mean_solution);
+    // the covariance of the coefficients per unit noise, M^-1 M2 M^-1
+    const Matrix6 covariance = inverse * squared_weights * inverse;
+    // K = (4 A C - B^2) / fade^2 to first order in the coefficients
+    const Eigen::Vector3d gradient(4 * coef(2), -2 * coef(1), 4 * coef(0));
+    const double spread_K = gradient.dot(covariance.topLeftCorner<3, 3>() * gradient);
     // of the least-squares solution (the correction is not fitted)
     const double residuals = (std::max)(0., s * s * zz - 2 * least_squares.dot(rhs)
                                               + least_squares.dot(normal_matrix * least_squares));
@@ -470,6 +479,8 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     error->noise = std::sqrt(variance) * fade;
     error->degrees_of_freedom = dof;
     error->per_noise = std::sqrt(spread) / (fade * fade);
+    error->per_noise_K = std::sqrt((std::max)(0., spread_K)) / (fade * fade * fade);
+    error->per_noise_normal = std::sqrt((std::max)(0., covariance(3, 3) + covariance(4, 4))) / fade;
   }
 
   // first and second fundamental forms of (x, y, z(x, y)) at the origin,
