@@ -141,8 +141,8 @@ def _soft_bins(values, low, high, bins):
     return i0, 1 - w1, i1, w1
 
 
-def region_descriptors(points, layers, centers=None, *, rings=(3.0, 6.0, 10.0), shape_bins=10,
-                       curvedness_bins=6, curvedness_range=2.0):
+def region_descriptors(points, layers, centers=None, *, normals=None, rings=(3.0, 6.0, 10.0), shape_bins=10,
+                       curvedness_bins=6, curvedness_range=2.0, geometry_bins=8):
     """Descriptors of the surface around chosen centre points, at every curvature scale, in rings.
 
     For each centre, the points of the surface within each ring of distance
@@ -222,16 +222,45 @@ def region_descriptors(points, layers, centers=None, *, rings=(3.0, 6.0, 10.0), 
     for part in (slice(0, shape_bins), slice(shape_bins, per_layer)):
         total = shaped[:, :, part].sum(axis=2, keepdims=True)
         np.divide(shaped[:, :, part], total, out=shaped[:, :, part], where=total > 0)
+    if normals is not None:
+        descriptors = np.hstack([descriptors, _geometry_histograms(points, normals, centers, rings, geometry_bins)])
     return Regions(points, centers, descriptors, rings, (shape_bins, curvedness_bins))
 
 
-def chi_square_distances(a, b, chunk=256):
+def _geometry_histograms(points, normals, centers, rings, bins):
+    """Per centre and ring: histograms of the cosine between the centre's normal and the points'
+    normals, and of the points' heights over the centre's tangent plane (over the ring's radius)."""
+    normals = np.asarray(normals, dtype=np.float64)
+    normals = normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
+    width = len(rings) * 2 * bins
+    out = np.zeros((len(centers), width))
+    outer = rings[-1]
+    for row, c in enumerate(centers):
+        offset = points - points[c]
+        d = np.sqrt(np.einsum("ij,ij->i", offset, offset))
+        near = np.nonzero(d <= outer)[0]
+        ring = np.minimum(np.searchsorted(rings, d[near], side="left"), len(rings) - 1)
+        cosine = normals[near] @ normals[c]
+        height = (offset[near] @ normals[c]) / rings[ring]
+        i0, w0, i1, w1 = _soft_bins(cosine, -1.0, 1.0, bins)
+        j0, v0, j1, v1 = _soft_bins(height, -1.0, 1.0, bins)
+        base = ring * 2 * bins
+        index = np.concatenate([base + i0, base + i1, base + bins + j0, base + bins + j1])
+        out[row] = np.bincount(index, weights=np.concatenate([w0, w1, v0, v1]), minlength=width)
+    shaped = out.reshape(len(centers), 2 * len(rings), bins)
+    total = shaped.sum(axis=2, keepdims=True)
+    np.divide(shaped, total, out=shaped, where=total > 0)
+    return out
+
+
+def chi_square_distances(a, b):
     """(len(a), len(b)) chi-square distances 1/2 sum (x - y)^2 / (x + y) between rows of
     histograms (0/0 terms count 0); divided by the number of histograms when rows are
     concatenations of normalised histograms, the distance lies in [0, 1]."""
     a = np.asarray(a, dtype=np.float64)
     b = np.asarray(b, dtype=np.float64)
     out = np.empty((len(a), len(b)))
+    chunk = max(1, 4_000_000 // max(1, len(b) * a.shape[1]))
     for start in range(0, len(a), chunk):
         x = a[start:start + chunk, None, :]
         total = x + b[None, :, :]
