@@ -9,7 +9,7 @@ Then 300 farthest-point centres on the first chain are each ranked against
 a 2,000-point farthest-point sample of the second; a hit is a candidate
 within 3 A of the centre's true place, found by superposing the CA atoms of
 the two chains (which the matcher never sees). Both methods see the same
-centres, candidates and rings:
+centres, candidates and rings (0-2, 2-4, ... 12-14 A):
   - curvature: region_descriptors (shape index and curvedness histograms
     per ring and radius), chi-square distances;
   - FPFH as usually used (one radius, 10 A), and FPFH in the same rings
@@ -38,7 +38,7 @@ PAIRS = {
     "tii": ("/usr/share/pymol/data/demo/1tii.pdb", "D", "E"),
 }
 RADII = (1.5, 3.0, 6.0, 9.0, 12.0)
-RINGS = (3.0, 6.0, 10.0)
+RINGS = (2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 14.0)
 CENTRES, CANDIDATES, HIT = 300, 2000, 3.0
 
 

@@ -113,10 +113,12 @@ class Regions:
             regions' centre points; descriptors: (M, D) float64, each row a
             concatenation of normalised histograms (sum 1 each), rings x
             layers x (shape index bins, curvedness bins).
-        rings: the rings' outer radii; bins: (shape index bins, curvedness bins).
+        rings: the rings' outer radii; bins: (shape index bins, curvedness bins);
+            histograms: the number of histograms in a row.
     """
 
-    def __init__(self, points, centers, descriptors, rings, bins):
+    def __init__(self, points, centers, descriptors, rings, bins, histograms):
+        self.histograms = histograms  # how many normalised histograms each row holds
         self.points = points
         self.centers = centers
         self.descriptors = descriptors
@@ -158,6 +160,10 @@ def region_descriptors(points, layers, centers=None, *, normals=None, rings=(3.0
 
     Parameters:
         points: (N, 3) the surface's points.
+        normals: optional (N, 3) outward normals: then, per ring, also
+            histograms (``geometry_bins`` bins) of the cosine between the
+            centre's normal and the points' normals and of the points'
+            heights over the centre's tangent plane over the ring's radius.
         layers: the curvature of the points: a ``Result`` (all its layers),
             a ``Layer``, or a list of them (any objects with per-point
             ``k1``, ``k2`` and ``radius``, e.g. dicts of arrays).
@@ -224,7 +230,8 @@ def region_descriptors(points, layers, centers=None, *, normals=None, rings=(3.0
         np.divide(shaped[:, :, part], total, out=shaped[:, :, part], where=total > 0)
     if normals is not None:
         descriptors = np.hstack([descriptors, _geometry_histograms(points, normals, centers, rings, geometry_bins)])
-    return Regions(points, centers, descriptors, rings, (shape_bins, curvedness_bins))
+    histograms = len(rings) * n_layers * 2 + (0 if normals is None else 2 * len(rings))
+    return Regions(points, centers, descriptors, rings, (shape_bins, curvedness_bins), histograms)
 
 
 def _geometry_histograms(points, normals, centers, rings, bins):
@@ -371,8 +378,7 @@ def match_regions(a, b, *, top=10, tolerance=3.0, iterations=2000, seed=0):
         raise ValueError("match_regions: the regions were described with different layouts")
     if len(b) == 0 or len(a) == 0:
         raise ValueError("match_regions: no region")
-    distances = chi_square_distances(a.descriptors, b.descriptors) / (len(a.rings) * 2 * (
-        a.descriptors.shape[1] // (len(a.rings) * (a.bins[0] + a.bins[1]))))
+    distances = chi_square_distances(a.descriptors, b.descriptors) / a.histograms
     top = min(top, len(b))
     order = np.argsort(distances, axis=1, kind="stable")[:, :top]
     scores = np.take_along_axis(distances, order, axis=1)
