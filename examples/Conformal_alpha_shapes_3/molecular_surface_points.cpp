@@ -30,11 +30,12 @@ const char* const usage =
   "usage: molecular_surface_points INPUT.pdb [OUTPUT.xyz] [--method NAME]\n"
   "                                [--spacing H] [--shrink S] [--probe P] [--normals]\n"
   "                                [--hydrogens] [--water] [--default-radius R]\n"
+  "                                [--model N] [--chains IDS] [--no-hetatm]\n"
   "                                [--cavities] [--mesh FILE.off] [--check] [--expect-points MIN,MAX]\n"
   "                                [--stats] [--quiet] [--help]\n"
   "\n"
   "Samples the surface of the molecule of a PDB file (ATOM and HETATM records,\n"
-  "the first model; Bondi van der Waals radii by element) and writes the points,\n"
+  "one model; Bondi van der Waals radii by element) and writes the points,\n"
   "one 'x y z' line each (angstroms), for conformal_curvature.\n"
   "  OUTPUT.xyz        default: INPUT with the extension .xyz\n"
   "  --method NAME     skin (default): the skin surface of the van der Waals balls,\n"
@@ -48,8 +49,11 @@ const char* const usage =
   "  --normals         write 'x y z nx ny nz' with outward unit normals\n"
   "  --hydrogens       keep hydrogen atoms (left out by default)\n"
   "  --water           keep waters (HOH, WAT, H2O, DOD, SOL; left out by default)\n"
-  "  --default-radius R  radius of elements without a Bondi radius (default:\n"
-  "                    such an element is an error)\n"
+  "  --default-radius R  radius of elements without a Bondi radius (Fe, Ca, ...),\n"
+  "                    default 2.0; 0: such an element is an error\n"
+  "  --model N         the model of MODEL serial number N (default: the first)\n"
+  "  --chains IDS      keep only these chains: A, AB or A,B (default: all)\n"
+  "  --no-hetatm       leave out HETATM records (ligands, ions, waters)\n"
   "  --cavities        skin only: keep the surfaces of cavities inside the molecule\n"
   "                    (closed sheets facing inward; left out by default)\n"
   "  --mesh FILE.off   skin only: write the subdivided skin mesh (the reference)\n"
@@ -121,11 +125,24 @@ Options parse(int argc, char* argv[])
     else if(arg == "--hydrogens") o.pdb.keep_hydrogens = true;
     else if(arg == "--water") o.pdb.keep_water = true;
     else if(arg == "--default-radius")
-    {
       o.pdb.default_radius = positive(arg, value());
-      if(!(o.pdb.default_radius > 0))
-        throw Failure("--default-radius: must be above 0");
+    else if(arg == "--model")
+    {
+      const double m = positive(arg, value());
+      if(!(m >= 1 && m == std::floor(m) && m < 1e9))
+        throw Failure("--model: not a model serial number (an integer from 1)");
+      o.pdb.model = int(m);
     }
+    else if(arg == "--chains")
+    {
+      o.pdb.chains.clear();
+      for(char c : value())
+        if(c != ',')
+          o.pdb.chains += c;
+      if(o.pdb.chains.empty())
+        throw Failure("--chains: no chain identifier");
+    }
+    else if(arg == "--no-hetatm") o.pdb.keep_hetatm = false;
     else if(arg == "--mesh") o.mesh = value();
     else if(arg == "--check") o.check = true;
     else if(arg == "--cavities") o.cavities = true;
@@ -341,6 +358,11 @@ int run(const Options& o)
   }
   if(!o.quiet)
   {
+    const std::size_t defaulted = std::size_t(std::count_if(
+      atoms.begin(), atoms.end(), [](const cas3::Atom& a) { return a.default_radius; }));
+    if(defaulted > 0)
+      std::printf("%s: %zu atom(s) without a Bondi radius given %.3g A\n", o.input.c_str(), defaulted,
+                  o.pdb.default_radius);
     std::printf("%s: %zu atoms; %s surface, spacing %.3g: %zu points in %.2f s", o.input.c_str(), atoms.size(),
                 o.method.c_str(), o.spacing, sample.points.size(), seconds);
     if(o.method == "skin")

@@ -12,6 +12,9 @@ The package of the CGAL package Conformal_alpha_shapes_3, for numpy:
   (.xyz, .pwn, .ply, .off, .obj and LAS, with LiDAR filters); ``Result.write_ply``
   and ``Result.write_las`` write the values per point.
 - ``read_curvatures(path)``: a ``curvatures.ply`` back into a ``Result``.
+- ``region_descriptors(points, result, centers)`` and ``match_regions(a, b)``:
+  multi-scale curvature descriptors of surface regions, the best matches of
+  one surface's regions on another, and the registration they give.
 - ``front_closing_values(points)``: the front's share of the automatic scale,
   per point, for tiled runs (``conformal_alpha_shapes.tiles``).
 
@@ -41,6 +44,8 @@ import warnings
 import numpy as np
 
 from . import _native, curvature_file
+from .matching import (Matches, Regions, curvedness, farthest_point_sample, match_regions, region_descriptors,
+                       shape_index)
 from .output_files import atomic_write
 
 __version__ = _native.__version__
@@ -48,6 +53,13 @@ __version__ = _native.__version__
 __all__ = [
     "ConformalAlphaShape",
     "Layer",
+    "Matches",
+    "Regions",
+    "curvedness",
+    "farthest_point_sample",
+    "match_regions",
+    "region_descriptors",
+    "shape_index",
     "NoiseEstimate",
     "PointCloud",
     "Result",
@@ -173,6 +185,10 @@ class Layer:
             principal curvatures (k1 >= k2), in inverse units of the points;
             H > 0 where the surface bends away from its normal (a sphere with
             outward normals has H = 1/r).
+        shape_index, curvedness: (N,) float64, Koenderink's shape index in
+            [-1, 1] (+1 on caps, -1 on cups, 0 on symmetric saddles, NaN
+            where flat) and curvedness (inverse units), from k1 and k2
+            (computed when read; ``shape_index()`` tells the convention).
         radius: (N,) float64, the radius of the fit's neighborhood.
         source: (N,) uint8, where a point's values come from: 0 its own
             surface vertex, 1 the nearest surface point, 2 no value (NaN).
@@ -212,6 +228,14 @@ class Layer:
         if key not in self._arrays or getattr(self, key) is None:
             raise KeyError(key)
         return getattr(self, key)
+
+    @property
+    def shape_index(self):
+        return shape_index(self.k1, self.k2)
+
+    @property
+    def curvedness(self):
+        return curvedness(self.k1, self.k2)
 
     def keys(self):
         """The names of the layer's arrays."""

@@ -28,6 +28,10 @@ class Layer:
     H_sigma: npt.NDArray[np.float64]
     K_sigma: npt.NDArray[np.float64]
     normal_sigma: npt.NDArray[np.float64]
+    @property
+    def shape_index(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def curvedness(self) -> npt.NDArray[np.float64]: ...
     def __getitem__(self, key: str) -> np.ndarray: ...
     def __len__(self) -> int: ...
     def keys(self) -> List[str]: ...
@@ -130,3 +134,11 @@ def read_point_cloud(
     drop_withheld: bool = ...,
     returns: str = ...,
 ) -> PointCloud: ...
+
+from .matching import Matches as Matches
+from .matching import Regions as Regions
+from .matching import curvedness as curvedness
+from .matching import farthest_point_sample as farthest_point_sample
+from .matching import match_regions as match_regions
+from .matching import region_descriptors as region_descriptors
+from .matching import shape_index as shape_index

@@ -11,6 +11,7 @@
 #include "cas3_read_point_cloud.h"
 
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
+#include <CGAL/Conformal_alpha_shapes_3/shape_index.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -232,9 +233,14 @@ void write_point_cloud(std::ostream& out, const std::vector<Point>& points, cons
     output_detail::put_value_properties(header, layer);
     header << "property uchar source_" << layer.label << "\n";
   }
+  // appended after the layers: Koenderink's shape index and curvedness of
+  // each layer, from its k1 and k2 (shape_index.h)
+  for(const Layer& layer : layers)
+    header << "property float shape_index_" << layer.label << "\nproperty float curvedness_" << layer.label << "\n";
   header << "end_header\n";
   out << header.str();
-  const std::size_t row_size = 3 * sizeof(double) + 1 + layers.size() * (Layer::number_of_values * sizeof(float) + 1);
+  const std::size_t row_size = 3 * sizeof(double) + 1 + layers.size() * (Layer::number_of_values * sizeof(float) + 1)
+                               + layers.size() * 2 * sizeof(float);
   output_detail::write_rows(out, points.size(), row_size, [&](std::size_t i, output_detail::Row_cursor& row) {
     row.put_position(points[i]);
     row.put(std::uint8_t(outlier[i] ? 1 : 0));
@@ -242,6 +248,12 @@ void write_point_cloud(std::ostream& out, const std::vector<Point>& points, cons
     {
       row.put_values(layer, i);
       row.put(layer.source[i]);
+    }
+    for(const Layer& layer : layers)
+    {
+      const float* v = layer.values.data() + i * Layer::number_of_values;
+      row.put(CGAL::Conformal_alpha_shapes_3::shape_index(v[5], v[6]));  // k1, k2
+      row.put(CGAL::Conformal_alpha_shapes_3::curvedness(v[5], v[6]));
     }
   });
 }

@@ -5,22 +5,32 @@
 //    file (fixed columns of the PDB format, version 3.3):
 //      columns 13-16 atom name, 17 alternate location, 18-20 residue name,
 //      31-38, 39-46, 47-54 x, y, z in angstroms, 77-78 element symbol.
-//    The element comes from columns 77-78; when they are blank (old files),
-//    from the atom name by the PDB convention: a one-letter element sits in
-//    column 14 (" CA " is a carbon), a two-letter element starts in column 13
-//    ("FE  ", "CA  " in a HETATM record is calcium), and four-character
-//    names start in column 13 ("HG11" is a hydrogen). Without columns 77-78,
-//    a HETATM name with letters in columns 13-14 is a two-letter element
-//    unless it starts with H or D (read as hydrogen: "HG  " mercury needs
-//    columns 77-78).
-//    Kept: the first model only (reading stops at the first ENDMDL or END);
-//    of atoms with alternate locations, those with a blank location or the
-//    first location seen (usually 'A'). Left out unless asked: hydrogens (H,
-//    D) and waters (residue HOH, WAT, H2O, DOD, SOL).
+//      22 chain, 23-26 residue number, 27 insertion code.
+//    The element comes from columns 77-78 when they hold letters. Old files
+//    (before format 2.0) hold the entry's code and a line number in columns
+//    73-80 ("1HPV 186"): when columns 77-80 are digits and blanks, or when
+//    77-78 are blank, the element comes from the atom name by the PDB
+//    convention: a one-letter element sits in column 14 (" CA " is a
+//    carbon), a two-letter element starts in column 13 ("FE  ", "CA  " in a
+//    HETATM record is calcium), and four-character names start in column 13
+//    ("HG11" is a hydrogen). Without an element column, a HETATM name with
+//    letters in columns 13-14 is a two-letter element when they name one of
+//    the metals and halogens found in structures (FE, CA, ZN, CL, ...) and
+//    do not start with H or D ("HG  " mercury needs columns 77-78); else the
+//    letter in column 13 ("PE  " a phosphorus).
+//    Kept: one model (the first, or the one asked for by its MODEL serial
+//    number; a file without MODEL records is model 1); reading stops at
+//    its ENDMDL or at END. Of the atoms of a residue (chain, number and
+//    insertion code) with alternate locations, those with a blank location
+//    or the residue's first location seen (usually 'A'). HETATM records are
+//    kept unless asked (Pdb_options::keep_hetatm); chains can be selected
+//    (Pdb_options::chains, "AB": chains A and B). Left out unless asked:
+//    hydrogens (H, D) and waters (residue HOH, WAT, H2O, DOD, SOL).
 //    A malformed record (too short for its coordinates, a coordinate that is
-//    not a number, an element that is not letters, an element without a
-//    radius) throws cas3::Read_error, a std::runtime_error, whose one-line
-//    message names the file and the line: "1crn.pdb:57: ...".
+//    not a number, an element column that is neither letters nor a line
+//    number, no element at all) throws cas3::Read_error, a
+//    std::runtime_error, whose one-line message names the file and the line:
+//    "1crn.pdb:57: ...". So does a model or chains that the file lacks.
 //
 // 2. bondi_radius(element): the van der Waals radius in angstroms, from
 //    A. Bondi, "van der Waals Volumes and Radii", J. Phys. Chem. 68 (1964)
@@ -31,7 +41,9 @@
 //      Pd 1.63 Ag 1.72  Cd 1.58  In 1.93 Sn 2.17 Te 2.06 I 1.98   Xe 2.16
 //      Pt 1.72 Au 1.66  Hg 1.55  Tl 1.96 Pb 2.02 U 1.86  (D as H)
 //    Elements without a Bondi radius (Fe, Ca, Mn, ...) get
-//    Pdb_options::default_radius when it is above 0, else are an error.
+//    Pdb_options::default_radius, 2.0 A unless set (the default the
+//    Cambridge Structural Database gives elements without a Bondi radius);
+//    with a default radius of 0 they are an error.
 //
 // 3. Two samplings of a surface around the atoms (all lengths in angstroms):
 //    - sample_skin_surface(): the skin surface (CGAL Skin_surface_3) of the
@@ -99,6 +111,9 @@ struct Atom
   std::string element;  // upper case: "C", "FE"
   std::string name;     // atom name, trimmed: "CA"
   std::string residue;  // residue name, trimmed: "THR"
+  char chain = ' ';     // chain identifier (column 22)
+  bool hetatm = false;  // a HETATM record
+  bool default_radius = false;  // no Bondi radius: Pdb_options::default_radius
   std::size_t line = 0; // line in the file
 };
 
@@ -106,7 +121,10 @@ struct Pdb_options
 {
   bool keep_hydrogens = false;
   bool keep_water = false;
-  double default_radius = 0;  // for elements without a Bondi radius; 0: error
+  bool keep_hetatm = true;
+  double default_radius = 2.0;  // for elements without a Bondi radius; 0: error
+  int model = 0;                // MODEL serial number; 0: the first model
+  std::string chains;           // chain identifiers to keep ("AB"); empty: all
 };
 
 // The Bondi van der Waals radius of an element ("C", "Cl" or "CL"), or 0
@@ -164,9 +182,22 @@ inline std::string element_from_name(const std::string& name, bool hetatm)
   // a letter in column 13: a two-letter element of a HETATM record ("FE  ",
   // "CA  " calcium), else a four-character name ("HG11" a hydrogen, "C10A")
   if(hetatm && is_letter(c14) && c13 != 'H' && c13 != 'h' && c13 != 'D' && c13 != 'd')
-    return upper(std::string{c13, c14});
+  {
+    // the metals and halogens of ligands and ions
+    static const char* const two_letter[] = {
+      "LI", "NA", "MG", "AL", "SI", "CL", "AR", "CA", "SC", "TI", "CR", "MN", "FE", "CO", "NI", "CU", "ZN",
+      "GA", "GE", "AS", "SE", "BR", "KR", "RB", "SR", "ZR", "MO", "RU", "RH", "PD", "AG", "CD", "IN", "SN",
+      "SB", "TE", "XE", "CS", "BA", "LA", "CE", "GD", "YB", "LU", "HF", "TA", "RE", "OS", "IR", "PT", "AU",
+      "TL", "PB", "BI"};
+    const std::string guess = upper(std::string{c13, c14});
+    for(const char* e : two_letter)
+      if(guess == e)
+        return guess;
+  }
   return upper(std::string(1, c13));
 }
+
+inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 inline bool is_water(const std::string& residue)
 {
@@ -183,25 +214,51 @@ inline std::vector<Atom> parse_pdb(const std::string& text, const std::string& n
   std::vector<Atom> atoms;
   read_detail::Lines lines(text);
   std::string line;
-  char first_alternate = ' ';
-  std::size_t records = 0;
+  // the first alternate location seen in each residue (chain, number, insertion code)
+  std::unordered_map<std::string, char> first_alternate;
+  std::size_t records = 0, in_model = 0;
+  std::string chains_seen, models_seen;
+  int model = 0;                 // the current MODEL serial number; 0 before any
+  bool reading = options.model <= 1;  // no MODEL record yet: the file's model 1
+  bool found_model = false;
   while(lines.next(line))
   {
     const std::string record = columns(line, 1, 6);
-    if(record == "ENDMDL" || trimmed(record) == "END")
+    if(trimmed(record) == "END")
       break;
+    if(record == "MODEL ")
+    {
+      const std::string serial = trimmed(columns(line, 11, 14));
+      model = serial.empty() ? model + 1 : int(read_detail::number(serial, name + ":" + std::to_string(lines.number())
+                                                                           + ": MODEL serial number (columns 11-14)"));
+      models_seen += (models_seen.empty() ? "" : ", ") + std::to_string(model);
+      reading = options.model == 0 ? !found_model : model == options.model;
+      found_model = found_model || reading;
+      continue;
+    }
+    if(record == "ENDMDL")
+    {
+      if(reading)
+        break;
+      continue;
+    }
     const bool hetatm = record == "HETATM";
     if(record != "ATOM  " && !hetatm)
       continue;
     ++records;
+    if(!reading)
+      continue;
+    ++in_model;
     const std::string where = name + ":" + std::to_string(lines.number());
     if(line.size() < 54)
       throw Read_error(where + ": " + trimmed(record) + " record too short: " + std::to_string(line.size())
                        + " characters, the coordinates need columns 31-54");
     Atom atom;
     atom.line = lines.number();
+    atom.hetatm = hetatm;
     atom.name = trimmed(columns(line, 13, 16));
     atom.residue = trimmed(columns(line, 18, 20));
+    atom.chain = columns(line, 22, 22)[0];
     double xyz[3];
     for(int k = 0; k < 3; ++k)
     {
@@ -215,7 +272,10 @@ inline std::vector<Atom> parse_pdb(const std::string& text, const std::string& n
     atom.center = Molecule_kernel::Point_3(xyz[0], xyz[1], xyz[2]);
 
     const std::string symbol = trimmed(columns(line, 77, 78));
-    if(!symbol.empty())
+    const std::string tail = columns(line, 77, 80);
+    // columns 73-80 of old files: the entry's code and a line number
+    const bool line_number = std::all_of(tail.begin(), tail.end(), [](char c) { return c == ' ' || is_digit(c); });
+    if(!symbol.empty() && !line_number)
     {
       if(!std::all_of(symbol.begin(), symbol.end(), [](char c) { return is_letter(c); }))
         throw Read_error(where + ": element symbol (columns 77-78) is not letters: '" + read_detail::shown(symbol)
@@ -226,17 +286,23 @@ inline std::vector<Atom> parse_pdb(const std::string& text, const std::string& n
     {
       atom.element = element_from_name(columns(line, 13, 16), hetatm);
       if(atom.element.empty())
-        throw Read_error(where + ": no element: columns 77-78 are blank and the atom name '"
-                         + read_detail::shown(atom.name) + "' (columns 13-16) does not give one");
+        throw Read_error(where + ": no element: columns 77-78 " + (symbol.empty() ? "are blank" : "hold a line number")
+                         + " and the atom name '" + read_detail::shown(atom.name)
+                         + "' (columns 13-16) does not give one");
     }
 
-    // alternate locations: the blank one and the first one seen
+    if(chains_seen.find(atom.chain) == std::string::npos)
+      chains_seen += atom.chain;
+    if(!options.chains.empty() && options.chains.find(atom.chain) == std::string::npos)
+      continue;
+    if(!options.keep_hetatm && hetatm)
+      continue;
+    // alternate locations: the blank one and the residue's first one seen
     const char alternate = columns(line, 17, 17)[0];
     if(alternate != ' ')
     {
-      if(first_alternate == ' ')
-        first_alternate = alternate;
-      if(alternate != first_alternate)
+      const char first = first_alternate.emplace(columns(line, 22, 27), alternate).first->second;
+      if(alternate != first)
         continue;
     }
     if(!options.keep_hydrogens && (atom.element == "H" || atom.element == "D"))
@@ -250,13 +316,25 @@ inline std::vector<Atom> parse_pdb(const std::string& text, const std::string& n
         throw Read_error(where + ": no Bondi radius for element '" + read_detail::shown(atom.element)
                          + "' (give a default radius)");
       atom.radius = options.default_radius;
+      atom.default_radius = true;
     }
     atoms.push_back(atom);
   }
   if(records == 0)
     throw Read_error(name + ": no ATOM or HETATM record: not a PDB file?");
+  if(options.model > 0 && in_model == 0)
+    throw Read_error(name + ": no model " + std::to_string(options.model) + " (models in the file: "
+                     + (models_seen.empty() ? std::string("1, without MODEL records") : models_seen) + ")");
+  if(atoms.empty() && !options.chains.empty())
+  {
+    std::string shown_chains;
+    for(char c : chains_seen)
+      shown_chains += std::string(shown_chains.empty() ? "" : ", ") + (c == ' ' ? std::string("blank") : std::string(1, c));
+    throw Read_error(name + ": no atom kept in chain(s) '" + options.chains + "' (chains in the file: " + shown_chains
+                     + ")");
+  }
   if(atoms.empty())
-    throw Read_error(name + ": every atom was left out (hydrogens, waters or alternate locations)");
+    throw Read_error(name + ": every atom was left out (hydrogens, waters, HETATM records or alternate locations)");
   return atoms;
 }
 

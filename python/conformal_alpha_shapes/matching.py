@@ -1,0 +1,389 @@
+"""Shape descriptors of surface regions, and matching them from one surface to another.
+
+numpy only. Lengths are in the units of the points; curvatures in inverse units.
+
+- ``shape_index(k1, k2)`` and ``curvedness(k1, k2)``: Koenderink's per-point
+  shape descriptors from the principal curvatures.
+- ``farthest_point_sample(points, n)``: n well-spread point indices.
+- ``region_descriptors(points, layers, centers)``: for each centre point, the
+  histograms of shape index and curvedness of the points around it, at each
+  curvature scale (layer) and in each of a few concentric rings.
+- ``match_regions(a, b)``: for each region of A, the best candidates of B by
+  the chi-square distance of their descriptors, and a rigid registration
+  from those matches (RANSAC over triples, then a least-squares fit on the
+  consistent ones) that places B onto A.
+"""
+
+import math
+
+import numpy as np
+
+__all__ = [
+    "Matches",
+    "Regions",
+    "chi_square_distances",
+    "curvedness",
+    "farthest_point_sample",
+    "fit_rigid",
+    "match_regions",
+    "region_descriptors",
+    "register_correspondences",
+    "shape_index",
+]
+
+
+def shape_index(k1, k2):
+    """Koenderink's shape index S = (2/pi) atan((k1 + k2) / (k1 - k2)), k1 >= k2, in [-1, 1].
+
+    The curvatures follow the outward normal (a sphere with outward normals
+    has k1 = k2 = 1/r > 0), so S = +1 on a convex cap (a bump), -1 on a
+    concave cup (a pit), +0.5 on a ridge (a convex cylinder), -0.5 on a rut,
+    0 on a symmetric saddle. Umbilic points (k1 = k2 != 0) get +1 or -1 by
+    their sign; flat points (k1 = k2 = 0) have no shape index: NaN. The
+    order of k1 and k2 does not matter (they are sorted); NaN in, NaN out.
+    """
+    k1 = np.asarray(k1, dtype=np.float64)
+    k2 = np.asarray(k2, dtype=np.float64)
+    hi, lo = np.maximum(k1, k2), np.minimum(k1, k2)
+    with np.errstate(invalid="ignore"):
+        s = (2 / math.pi) * np.arctan2(hi + lo, hi - lo)
+    s = np.where((hi == 0) & (lo == 0), np.nan, s)
+    return s if s.ndim else float(s)
+
+
+def curvedness(k1, k2):
+    """Koenderink's curvedness C = sqrt((k1^2 + k2^2) / 2) >= 0, in inverse units of the points
+    (1/r on a sphere or a plane's 0); how much the surface bends, whatever its shape."""
+    k1 = np.asarray(k1, dtype=np.float64)
+    k2 = np.asarray(k2, dtype=np.float64)
+    c = np.sqrt((k1 * k1 + k2 * k2) / 2)
+    return c if c.ndim else float(c)
+
+
+def _points(values, name):
+    array = np.asarray(values, dtype=np.float64)
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise ValueError(f"{name} must be an (N, 3) array, got shape {array.shape}")
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{name}: NaN or infinite coordinates")
+    return np.ascontiguousarray(array)
+
+
+def farthest_point_sample(points, n, first=0):
+    """Indices of n points of the cloud chosen greedily, each the farthest from those chosen before,
+    starting from index ``first``: a spread-out sample, the same on every run. All the indices when
+    n >= len(points)."""
+    points = _points(points, "points")
+    count = len(points)
+    if n >= count:
+        return np.arange(count)
+    chosen = np.empty(n, dtype=np.int64)
+    chosen[0] = first
+    distance = np.sum((points - points[first]) ** 2, axis=1)
+    for i in range(1, n):
+        chosen[i] = int(np.argmax(distance))
+        np.minimum(distance, np.sum((points - points[chosen[i]]) ** 2, axis=1), out=distance)
+    return chosen
+
+
+def _layer_values(layers):
+    """The (shape index, curvedness x radius) of every point at every layer: two (N, L) arrays."""
+    if hasattr(layers, "layers") and hasattr(layers, "__getitem__") and not isinstance(layers, (list, tuple)):
+        layers = [layers[name] for name in layers.layers]
+    if isinstance(layers, dict) or hasattr(layers, "k1"):
+        layers = [layers]
+    s, c = [], []
+    for layer in layers:
+        k1 = np.asarray(layer["k1"], dtype=np.float64)
+        k2 = np.asarray(layer["k2"], dtype=np.float64)
+        radius = np.asarray(layer["radius"], dtype=np.float64)
+        s.append(shape_index(k1, k2))
+        # curvedness without unit: times the fit's radius (about 1 on a sphere as large as the fit)
+        c.append(curvedness(k1, k2) * radius)
+    if not s:
+        raise ValueError("region_descriptors: no curvature layer")
+    return np.column_stack(s), np.column_stack(c)
+
+
+class Regions:
+    """Descriptors of regions of a surface.
+
+    Attributes:
+        points: (N, 3) the surface's points; centers: (M,) indices of the
+            regions' centre points; descriptors: (M, D) float64, each row a
+            concatenation of normalised histograms (sum 1 each), rings x
+            layers x (shape index bins, curvedness bins).
+        rings: the rings' outer radii; bins: (shape index bins, curvedness bins);
+            histograms: the number of histograms in a row.
+    """
+
+    def __init__(self, points, centers, descriptors, rings, bins, histograms):
+        self.histograms = histograms  # how many normalised histograms each row holds
+        self.points = points
+        self.centers = centers
+        self.descriptors = descriptors
+        self.rings = tuple(rings)
+        self.bins = tuple(bins)
+
+    def __len__(self):
+        return len(self.centers)
+
+    def __repr__(self):
+        return (f"<Regions: {len(self.centers)} centres, {self.descriptors.shape[1]} values each, rings "
+                f"{self.rings}>")
+
+
+def _soft_bins(values, low, high, bins):
+    """Linear (two nearest bin centres) histogram weights of values in [low, high]: (index, weight) pairs."""
+    t = (np.clip(values, low, high) - low) / (high - low) * bins - 0.5
+    t = np.clip(t, 0, bins - 1)
+    i0 = np.floor(t).astype(np.int64)
+    i1 = np.minimum(i0 + 1, bins - 1)
+    w1 = t - i0
+    return i0, 1 - w1, i1, w1
+
+
+def region_descriptors(points, layers, centers=None, *, normals=None, rings=(3.0, 6.0, 10.0), shape_bins=10,
+                       curvedness_bins=6, curvedness_range=2.0, geometry_bins=8):
+    """Descriptors of the surface around chosen centre points, at every curvature scale, in rings.
+
+    For each centre, the points of the surface within each ring of distance
+    (0 to rings[0], rings[0] to rings[1], ...; model units) are summarised,
+    for each curvature layer, by a histogram of their shape index (over
+    [-1, 1]) and one of their curvedness times the layer's fit radius (over
+    [0, curvedness_range], the last bin taking larger values); each
+    histogram is soft (a value shares its weight between the two nearest
+    bins) and normalised to sum 1 (all zeros for an empty ring). Points
+    without a shape index (flat, or NaN) count in neither histogram.
+    Distances are Euclidean in space, so the rings suit surfaces whose
+    sheets are farther apart than the largest ring's width.
+
+    Parameters:
+        points: (N, 3) the surface's points.
+        normals: optional (N, 3) outward normals: then, per ring, also
+            histograms (``geometry_bins`` bins) of the cosine between the
+            centre's normal and the points' normals and of the points'
+            heights over the centre's tangent plane over the ring's radius.
+        layers: the curvature of the points: a ``Result`` (all its layers),
+            a ``Layer``, or a list of them (any objects with per-point
+            ``k1``, ``k2`` and ``radius``, e.g. dicts of arrays).
+        centers: None (every point), an int n (a farthest-point sample of n
+            points) or an array of point indices.
+        rings: increasing outer radii of the rings.
+        shape_bins, curvedness_bins: the histograms' bins.
+        curvedness_range: the end of the last curvedness bin, for C x radius.
+
+    Returns:
+        ``Regions``.
+    """
+    points = _points(points, "points")
+    s, c = _layer_values(layers)
+    if len(s) != len(points):
+        raise ValueError(f"region_descriptors: {len(points)} points but {len(s)} values per layer")
+    rings = np.asarray(rings, dtype=np.float64)
+    if rings.ndim != 1 or len(rings) == 0 or not np.all(rings > 0) or np.any(np.diff(rings) <= 0):
+        raise ValueError("region_descriptors: rings must be increasing radii > 0")
+    if shape_bins < 2 or curvedness_bins < 1:
+        raise ValueError("region_descriptors: at least 2 shape index bins and 1 curvedness bin")
+    if centers is None:
+        centers = np.arange(len(points))
+    elif np.isscalar(centers) and float(centers) == int(centers):
+        centers = farthest_point_sample(points, int(centers))
+    else:
+        centers = np.asarray(centers, dtype=np.int64)
+        if centers.ndim != 1 or (len(centers) and (centers.min() < 0 or centers.max() >= len(points))):
+            raise ValueError("region_descriptors: centers must be point indices")
+    n_layers = s.shape[1]
+    per_layer = shape_bins + curvedness_bins
+    width = len(rings) * n_layers * per_layer
+    defined = np.isfinite(s) & np.isfinite(c)
+    s0, sw0, s1, sw1 = _soft_bins(np.nan_to_num(s), -1.0, 1.0, shape_bins)
+    c0, cw0, c1, cw1 = _soft_bins(np.nan_to_num(c), 0.0, curvedness_range, curvedness_bins)
+    layer_offset = np.arange(n_layers) * per_layer
+    s0 = s0 + layer_offset
+    s1 = s1 + layer_offset
+    c0 = c0 + layer_offset + shape_bins
+    c1 = c1 + layer_offset + shape_bins
+    weight = defined.astype(np.float64)
+    descriptors = np.zeros((len(centers), width))
+    outer2 = rings[-1] ** 2
+    chunk = max(1, 4_000_000 // max(1, len(points)))
+    for start in range(0, len(centers), chunk):
+        block = centers[start:start + chunk]
+        d2 = (np.sum(points[block] ** 2, axis=1)[:, None] - 2 * points[block] @ points.T
+              + np.sum(points ** 2, axis=1)[None, :])
+        for row, centre in enumerate(block):
+            near = np.nonzero(d2[row] <= outer2)[0]
+            ring = np.searchsorted(rings, np.sqrt(np.maximum(d2[row, near], 0)), side="left")
+            ring = np.minimum(ring, len(rings) - 1)
+            base = (ring * (n_layers * per_layer))[:, None]
+            w = weight[near]
+            index = np.concatenate([(base + s0[near]).ravel(), (base + s1[near]).ravel(),
+                                    (base + c0[near]).ravel(), (base + c1[near]).ravel()])
+            values = np.concatenate([(w * sw0[near]).ravel(), (w * sw1[near]).ravel(),
+                                     (w * cw0[near]).ravel(), (w * cw1[near]).ravel()])
+            descriptors[start + row] = np.bincount(index, weights=values, minlength=width)
+    # each histogram normalised to sum 1
+    shaped = descriptors.reshape(len(centers), len(rings) * n_layers, per_layer)
+    for part in (slice(0, shape_bins), slice(shape_bins, per_layer)):
+        total = shaped[:, :, part].sum(axis=2, keepdims=True)
+        np.divide(shaped[:, :, part], total, out=shaped[:, :, part], where=total > 0)
+    if normals is not None:
+        descriptors = np.hstack([descriptors, _geometry_histograms(points, normals, centers, rings, geometry_bins)])
+    histograms = len(rings) * n_layers * 2 + (0 if normals is None else 2 * len(rings))
+    return Regions(points, centers, descriptors, rings, (shape_bins, curvedness_bins), histograms)
+
+
+def _geometry_histograms(points, normals, centers, rings, bins):
+    """Per centre and ring: histograms of the cosine between the centre's normal and the points'
+    normals, and of the points' heights over the centre's tangent plane (over the ring's radius)."""
+    normals = np.asarray(normals, dtype=np.float64)
+    normals = normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
+    width = len(rings) * 2 * bins
+    out = np.zeros((len(centers), width))
+    outer = rings[-1]
+    for row, c in enumerate(centers):
+        offset = points - points[c]
+        d = np.sqrt(np.einsum("ij,ij->i", offset, offset))
+        near = np.nonzero(d <= outer)[0]
+        ring = np.minimum(np.searchsorted(rings, d[near], side="left"), len(rings) - 1)
+        cosine = normals[near] @ normals[c]
+        height = (offset[near] @ normals[c]) / rings[ring]
+        i0, w0, i1, w1 = _soft_bins(cosine, -1.0, 1.0, bins)
+        j0, v0, j1, v1 = _soft_bins(height, -1.0, 1.0, bins)
+        base = ring * 2 * bins
+        index = np.concatenate([base + i0, base + i1, base + bins + j0, base + bins + j1])
+        out[row] = np.bincount(index, weights=np.concatenate([w0, w1, v0, v1]), minlength=width)
+    shaped = out.reshape(len(centers), 2 * len(rings), bins)
+    total = shaped.sum(axis=2, keepdims=True)
+    np.divide(shaped, total, out=shaped, where=total > 0)
+    return out
+
+
+def chi_square_distances(a, b):
+    """(len(a), len(b)) chi-square distances 1/2 sum (x - y)^2 / (x + y) between rows of
+    histograms (0/0 terms count 0); divided by the number of histograms when rows are
+    concatenations of normalised histograms, the distance lies in [0, 1]."""
+    a = np.asarray(a, dtype=np.float64)
+    b = np.asarray(b, dtype=np.float64)
+    out = np.empty((len(a), len(b)))
+    chunk = max(1, 4_000_000 // max(1, len(b) * a.shape[1]))
+    for start in range(0, len(a), chunk):
+        x = a[start:start + chunk, None, :]
+        total = x + b[None, :, :]
+        diff = x - b[None, :, :]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            terms = np.where(total > 0, diff * diff / np.where(total > 0, total, 1), 0)
+        out[start:start + chunk] = 0.5 * terms.sum(axis=2)
+    return out
+
+
+def fit_rigid(source, target, weights=None):
+    """The rotation R and translation t minimising sum w |R source + t - target|^2 (Kabsch, a proper
+    rotation): (R (3, 3), t (3,))."""
+    source = np.asarray(source, dtype=np.float64)
+    target = np.asarray(target, dtype=np.float64)
+    w = np.ones(len(source)) if weights is None else np.asarray(weights, dtype=np.float64)
+    w = w / w.sum()
+    cs = w @ source
+    ct = w @ target
+    h = ((source - cs) * w[:, None]).T @ (target - ct)
+    u, _, vt = np.linalg.svd(h)
+    d = np.sign(np.linalg.det(vt.T @ u.T))
+    r = vt.T @ np.diag([1.0, 1.0, d]) @ u.T
+    return r, ct - r @ cs
+
+
+def register_correspondences(source, target, *, tolerance=3.0, iterations=2000, seed=0):
+    """A rigid motion placing ``source`` points onto their ``target`` points, robust to wrong pairs.
+
+    RANSAC: triples of pairs whose mutual distances agree within
+    ``tolerance`` on both sides give candidate motions; the one under which
+    most pairs land within ``tolerance`` wins, then is refitted by least
+    squares on those pairs (twice). Returns (R, t, inliers), inliers a
+    boolean array over the pairs.
+    """
+    source = _points(source, "source")
+    target = _points(target, "target")
+    n = len(source)
+    if n < 3:
+        raise ValueError("register_correspondences: fewer than 3 pairs")
+    rng = np.random.default_rng(seed)
+    best_count, best = -1, None
+    for _ in range(iterations):
+        i = rng.choice(n, 3, replace=False)
+        ds = np.linalg.norm(source[i][:, None] - source[i][None], axis=2)
+        dt = np.linalg.norm(target[i][:, None] - target[i][None], axis=2)
+        if np.max(np.abs(ds - dt)) > tolerance or np.min(ds[np.triu_indices(3, 1)]) < tolerance:
+            continue
+        r, t = fit_rigid(source[i], target[i])
+        count = int(np.sum(np.linalg.norm(source @ r.T + t - target, axis=1) < tolerance))
+        if count > best_count:
+            best_count, best = count, (r, t)
+    if best is None:
+        r, t = fit_rigid(source, target)
+    else:
+        r, t = best
+    inliers = np.linalg.norm(source @ r.T + t - target, axis=1) < tolerance
+    for _ in range(2):
+        if inliers.sum() >= 3:
+            r, t = fit_rigid(source[inliers], target[inliers])
+            inliers = np.linalg.norm(source @ r.T + t - target, axis=1) < tolerance
+    return r, t, inliers
+
+
+class Matches:
+    """The best candidates of B for each region of A, and the registration of B onto A.
+
+    Attributes:
+        centers: (M,) A's centre point indices; candidates: (M, top) B's
+            point indices, best first; scores: (M, top) their chi-square
+            distances (0 identical, smaller is better).
+        rotation, translation: the rigid motion x -> R x + t placing B onto A.
+        inliers: (M,) whether each centre's best candidate agrees with the
+            registration (within the tolerance); consistent: their share.
+    """
+
+    def __init__(self, centers, candidates, scores, rotation, translation, inliers):
+        self.centers = centers
+        self.candidates = candidates
+        self.scores = scores
+        self.rotation = rotation
+        self.translation = translation
+        self.inliers = inliers
+        self.consistent = float(np.mean(inliers)) if len(inliers) else 0.0
+
+    def transform(self, points):
+        """B's points placed onto A."""
+        return np.asarray(points, dtype=np.float64) @ self.rotation.T + self.translation
+
+    def __repr__(self):
+        return f"<Matches: {len(self.centers)} regions, {self.consistent:.0%} consistent with the registration>"
+
+
+def match_regions(a, b, *, top=10, tolerance=3.0, iterations=2000, seed=0):
+    """The best candidates among B's regions for each of A's, and the registration of B onto A.
+
+    Parameters:
+        a, b: ``Regions`` of the two surfaces, made with the same rings,
+            bins and layers (the same radii, in the same units).
+        top: candidates kept per region of A.
+        tolerance: the registration's inlier distance (model units).
+        iterations, seed: of the RANSAC.
+
+    Returns:
+        ``Matches``.
+    """
+    if a.descriptors.shape[1] != b.descriptors.shape[1] or a.rings != b.rings or a.bins != b.bins:
+        raise ValueError("match_regions: the regions were described with different layouts")
+    if len(b) == 0 or len(a) == 0:
+        raise ValueError("match_regions: no region")
+    distances = chi_square_distances(a.descriptors, b.descriptors) / a.histograms
+    top = min(top, len(b))
+    order = np.argsort(distances, axis=1, kind="stable")[:, :top]
+    scores = np.take_along_axis(distances, order, axis=1)
+    candidates = b.centers[order]
+    rotation, translation, inliers = register_correspondences(
+        b.points[candidates[:, 0]], a.points[a.centers], tolerance=tolerance, iterations=iterations, seed=seed) \
+        if len(a) >= 3 else (np.eye(3), np.zeros(3), np.zeros(len(a), dtype=bool))
+    return Matches(a.centers, candidates, scores, rotation, translation, inliers)

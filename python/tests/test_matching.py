@@ -1,0 +1,81 @@
+"""Shape index, curvedness, region descriptors and matching (conformal_alpha_shapes.matching)."""
+import os
+
+import numpy as np
+import pytest
+
+import conformal_alpha_shapes as cas
+
+
+def test_shape_index_convention():
+    # curvatures follow the outward normal: a sphere has k1 = k2 = 1/r > 0
+    assert cas.shape_index(0.5, 0.5) == 1.0
+    assert cas.shape_index(-0.5, -0.5) == -1.0
+    assert cas.shape_index(0.5, 0.0) == pytest.approx(0.5)
+    assert cas.shape_index(0.0, -0.5) == pytest.approx(-0.5)
+    assert cas.shape_index(0.5, -0.5) == 0.0
+    assert np.isnan(cas.shape_index(0.0, 0.0))
+    assert cas.shape_index(0.0, 0.5) == cas.shape_index(0.5, 0.0)
+    assert cas.curvedness(0.5, 0.5) == 0.5
+    assert cas.curvedness(0.0, 0.0) == 0.0
+    s = cas.shape_index(np.array([1.0, 0.0, np.nan]), np.array([1.0, 0.0, 1.0]))
+    assert s[0] == 1.0 and np.isnan(s[1]) and np.isnan(s[2])
+
+
+def test_layer_shape_index_on_a_sphere():
+    from conftest import fibonacci_sphere
+    points, normals = fibonacci_sphere(3000, radius=2.0)
+    r = cas.multiscale_curvatures(points, normals, radii=(0.8,))
+    layer = r[r.layers[0]]
+    assert np.nanmedian(layer.shape_index) == pytest.approx(1.0, abs=0.02)
+    assert np.nanmedian(layer.curvedness) == pytest.approx(0.5, rel=0.05)
+
+
+def test_farthest_point_sample():
+    points = np.random.default_rng(3).random((500, 3))
+    chosen = cas.farthest_point_sample(points, 50)
+    assert len(set(chosen.tolist())) == 50 and chosen[0] == 0
+    assert len(cas.farthest_point_sample(points, 900)) == 500
+
+
+def test_bad_arguments():
+    points = np.random.default_rng(3).random((50, 3))
+    layer = {"k1": np.ones(50), "k2": np.ones(50), "radius": np.ones(50)}
+    with pytest.raises(ValueError, match="rings must be increasing"):
+        cas.region_descriptors(points, layer, 5, rings=(3, 2))
+    with pytest.raises(ValueError, match="50 points but 49 values"):
+        cas.region_descriptors(points, {k: v[:49] for k, v in layer.items()}, 5)
+    with pytest.raises(ValueError, match="point indices"):
+        cas.region_descriptors(points, layer, np.array([0, 50]))
+    a = cas.region_descriptors(points, layer, 5)
+    b = cas.region_descriptors(points, layer, 5, rings=(2.0, 4.0))
+    with pytest.raises(ValueError, match="different layouts"):
+        cas.match_regions(a, b)
+
+
+def test_crambin_matches_a_moved_copy():
+    """The crambin surface (8,186 points) against a rotated, translated copy, each with its own
+    curvature; 100 farthest-point centres against 800 candidates of the copy sampled from
+    another start. Measured: top-1 1.00, top-10 1.00, all matches consistent, motion to 1e-3 A."""
+    path = os.path.join(os.environ.get("CAS3_SOURCE_DIR", "."),
+                        "examples/Conformal_alpha_shapes_3/data/1crn_surface.xyz")
+    data = np.loadtxt(path)
+    points, normals = data[:, :3], data[:, 3:]
+    angle = 0.9
+    rotation = np.array([[np.cos(angle), 0, np.sin(angle)], [0, 1, 0], [-np.sin(angle), 0, np.cos(angle)]])
+    moved = points @ rotation.T + np.array([10.0, -3.0, 7.0])
+    radii = (1.5, 3.0, 6.0)
+    ra = cas.multiscale_curvatures(points, normals, radii=radii)
+    rb = cas.multiscale_curvatures(moved, normals @ rotation.T, radii=radii)
+    a = cas.region_descriptors(points, ra, 100, normals=normals)
+    b = cas.region_descriptors(moved, rb, cas.farthest_point_sample(moved, 800, first=4000),
+                               normals=normals @ rotation.T)
+    matches = cas.match_regions(a, b, top=10)
+    truth = moved[a.centers]
+    found = np.linalg.norm(moved[matches.candidates] - truth[:, None, :], axis=2) <= 3.0
+    assert np.mean(found[:, 0]) >= 0.95
+    assert np.mean(np.any(found, axis=1)) >= 0.99
+    assert matches.consistent >= 0.9
+    # B placed onto A: the inverse of the motion
+    assert np.max(np.abs(matches.transform(moved) - points)) < 0.2
+    assert (matches.scores[:, 1:] >= matches.scores[:, :-1]).all()
