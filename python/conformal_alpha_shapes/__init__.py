@@ -455,7 +455,7 @@ class Result:
                               "to_structured() gives the same columns as a numpy structured array") from None
         return pandas.DataFrame(self.to_structured(name))
 
-    def write_ply(self, path, precision="float32"):
+    def write_ply(self, path, precision="float64"):
         """Writes the values to ``path`` as the program's ``curvatures.ply``; returns ``path``.
 
         A binary little-endian PLY point cloud: per point x y z (float64),
@@ -463,12 +463,12 @@ class Result:
         k2_L d1x_L .. d2z_L radius_L distance_L and the uchar source_L, the
         scalar fields CloudCompare shows by name, and a comment line per layer.
 
-        precision: "float32" (default), the program's file, the same bytes as
-            ``conformal_curvature`` on the same points and options; or
-            "float64", the values as doubles with the run's decisions (spacing,
-            noise, smoothing, each layer's scale and surface report) in one more
-            comment line, so that ``read_curvatures`` gives back a Result equal
-            to this one to the bit.
+        precision: "float64" (default), the values as doubles with the run's
+            decisions (spacing, noise, smoothing, each layer's scale and surface
+            report) in one more comment line, so that ``read_curvatures`` gives
+            back a Result equal to this one to the bit; or "float32", the
+            program's file, the same bytes as ``conformal_curvature`` on the
+            same points and options (half the size).
 
         The file is written beside ``path`` and renamed into place, so it is
         never half written; it gets a new file's mode (-rw-r--r-- under umask
@@ -490,13 +490,13 @@ def read_curvatures(path):
     """The ``Result`` a ``curvatures.ply`` holds: the program's file, ``Result.write_ply``'s, or the
     merged file (and the parts) of a tiled run.
 
-    From a file of ``write_ply(path, precision="float64")`` the Result is equal
-    (``==``) to the one that wrote it, to the bit. From the program's float32
+    From a file of ``write_ply(path)`` the Result is equal (``==``) to the one
+    that wrote it, to the bit. From the program's float32
     file the values are its floats, the layers' scales ``a`` as their header
     comments print them (6 digits), and ``spacing``, ``noise``, ``denoised``,
     ``merged`` and the layers' ``surface`` reports are None (the file does not
     hold them);
-    writing that Result again gives the same bytes.
+    writing that Result again with ``precision="float32"`` gives the same bytes.
 
     Raises:
         OSError: a missing or unreadable file.

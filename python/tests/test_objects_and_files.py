@@ -34,8 +34,8 @@ def mode(path):
 
 
 def test_written_files_have_a_new_files_mode(result, tmp_path, umask_022):
-    result.write_ply(tmp_path / "float.ply")
-    result.write_ply(tmp_path / "double.ply", precision="float64")
+    result.write_ply(tmp_path / "float.ply", precision="float32")
+    result.write_ply(tmp_path / "double.ply")
     records = np.zeros(3, dtype=tile_io.part_dtype(["r4s"]))
     tile_io.write_part(str(tmp_path / "part.ply"), records, ["r4s"], {"r4s": "a = 1 (auto), radius 0.1"})
     tile_io.merge_parts(str(tmp_path / "merged.ply"), [str(tmp_path / "part.ply")], ["r4s"],
@@ -70,17 +70,17 @@ def test_errors_name_the_callers_path(result, tmp_path):
 
 
 def test_read_curvatures_gives_back_the_result(result, tmp_path):
-    path = result.write_ply(tmp_path / "double.ply", precision="float64")
+    path = result.write_ply(tmp_path / "double.ply")
     assert path == str(tmp_path / "double.ply")
     again = cas.read_curvatures(path)
     assert again == result  # to the bit: points, outliers, decisions, every layer's arrays and reports
     assert again.spacing == result.spacing and again["rauto"].surface["faces"] == result["rauto"].surface["faces"]
-    assert cas.read_curvatures(again.write_ply(tmp_path / "double2.ply", precision="float64")) == result
+    assert cas.read_curvatures(again.write_ply(tmp_path / "double2.ply")) == result
     assert (tmp_path / "double2.ply").read_bytes() == (tmp_path / "double.ply").read_bytes()
 
 
 def test_read_curvatures_of_the_programs_float_file(result, tmp_path):
-    result.write_ply(tmp_path / "float.ply")
+    result.write_ply(tmp_path / "float.ply", precision="float32")
     again = cas.read_curvatures(tmp_path / "float.ply")
     assert again != result and again.layers == result.layers
     assert np.array_equal(again.points, result.points) and np.array_equal(again.outlier, result.outlier)
@@ -93,7 +93,9 @@ def test_read_curvatures_of_the_programs_float_file(result, tmp_path):
         assert again[name].a == pytest.approx(result[name].a, rel=1e-5)
     assert again.spacing is None and again.noise is None and again.denoised is None
     assert "spacing" not in repr(again)
-    again.write_ply(tmp_path / "float2.ply")
+    again.write_ply(tmp_path / "float2.ply", precision="float32")
+    # and its values as doubles read back to the bit
+    assert cas.read_curvatures(again.write_ply(tmp_path / "double.ply")) == again
     assert (tmp_path / "float2.ply").read_bytes() == (tmp_path / "float.ply").read_bytes()
 
 
