@@ -19,6 +19,7 @@ import os
 import numpy as np
 
 from . import output_files
+from .matching import curvedness, shape_index
 
 __all__ = ["read_values", "write_double_ply", "LAYER_FIELDS"]
 
@@ -149,10 +150,18 @@ def write_double_ply(path, points, outlier, layers, spacing, noise, denoised, me
 
     ``layers``: the ``Layer`` objects, in order. Atomic, with a new file's mode.
     """
+    count = len(points)
+    for layer in layers:
+        for key, shape in [(key, (count, 3)) for key in _TRIPLES] + [(key, (count,)) for key in _SCALARS + ("source",)]:
+            if np.shape(getattr(layer, key)) != shape:
+                raise ValueError(f"write_ply: layer {layer.name}: {key} has not one value per point")
     fields = [("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("outlier", "u1")]
     for layer in layers:
         fields += [(f"{field}_{layer.name}", "<f8") for field in LAYER_FIELDS] + [(f"source_{layer.name}", "u1")]
-    records = np.empty(len(points), dtype=fields)
+    # after the layers, as in the program's file
+    for layer in layers:
+        fields += [(f"shape_index_{layer.name}", "<f8"), (f"curvedness_{layer.name}", "<f8")]
+    records = np.empty(count, dtype=fields)
     for i, axis in enumerate("xyz"):
         records[axis] = points[:, i]
     records["outlier"] = outlier
@@ -163,6 +172,8 @@ def write_double_ply(path, points, outlier, layers, spacing, noise, denoised, me
         for key in _SCALARS:
             records[f"{key}_{layer.name}"] = getattr(layer, key)
         records[f"source_{layer.name}"] = layer.source
+        records[f"shape_index_{layer.name}"] = shape_index(layer.k1, layer.k2)
+        records[f"curvedness_{layer.name}"] = curvedness(layer.k1, layer.k2)
     run = {"spacing": spacing, "noise": noise, "denoised": denoised, "merged": merged,
            "layers": {layer.name: {"a": layer.a, "surface": layer.surface} for layer in layers}}
     lines = ["ply", "format binary_little_endian 1.0"] + [f"comment {c}" for c in _HEADER_COMMENTS]

@@ -20,6 +20,7 @@ import os
 import numpy as np
 
 from . import output_files
+from .matching import curvedness, shape_index
 
 __all__ = [
     "InputError",
@@ -318,10 +319,14 @@ def save_array(path, values):
 
 
 def part_dtype(layers, with_index=True):
-    """The record of ``curvatures.ply`` for layer names ``layers`` (plus ``input_index``)."""
+    """The record of ``curvatures.ply`` for layer names ``layers`` (plus ``input_index``); the
+    merged file's (``with_index=False``) has each layer's shape index and curvedness after the layers."""
     fields = [("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("outlier", "u1")]
     for name in layers:
         fields += [(f"{field}_{name}", "<f4") for field in _LAYER_FIELDS] + [(f"source_{name}", "u1")]
+    if not with_index:
+        for name in layers:
+            fields += [(f"shape_index_{name}", "<f4"), (f"curvedness_{name}", "<f4")]
     if with_index:
         fields.append(("input_index", "<f8"))
     return np.dtype(fields)
@@ -378,8 +383,14 @@ def merge_parts(path, part_paths, layers, descriptions, count):
             for start in range(0, len(part), 1 << 20):
                 block = part[start:start + (1 << 20)]
                 values = np.empty(len(block), dtype)
-                for name in dtype.names:
-                    values[name] = block[name]
+                for name in block.dtype.names:
+                    if name != "input_index":
+                        values[name] = block[name]
+                # computed here, once the parts' orientations are final
+                for name in layers:
+                    k1, k2 = block[f"k1_{name}"].astype(np.float64), block[f"k2_{name}"].astype(np.float64)
+                    values[f"shape_index_{name}"] = shape_index(k1, k2)
+                    values[f"curvedness_{name}"] = curvedness(k1, k2)
                 out[block["input_index"].astype(np.int64)] = values
         out.flush()
         del out

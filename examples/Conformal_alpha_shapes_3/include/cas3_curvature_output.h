@@ -252,8 +252,9 @@ void write_point_cloud(std::ostream& out, const std::vector<Point>& points, cons
     for(const Layer& layer : layers)
     {
       const float* v = layer.values.data() + i * Layer::number_of_values;
-      row.put(CGAL::Conformal_alpha_shapes_3::shape_index(v[5], v[6]));  // k1, k2
-      row.put(CGAL::Conformal_alpha_shapes_3::curvedness(v[5], v[6]));
+      // from k1 and k2 in double, as Python's functions compute them
+      row.put(float(CGAL::Conformal_alpha_shapes_3::shape_index(double(v[5]), double(v[6]))));
+      row.put(float(CGAL::Conformal_alpha_shapes_3::curvedness(double(v[5]), double(v[6]))));
     }
   });
 }

@@ -14,18 +14,18 @@ namespace Conformal_alpha_shapes_3 {
 \ingroup PkgConformalAlphaShapes3Curvature
 
 Koenderink's shape index of a surface point from its principal curvatures:
-\f$ S = \frac{2}{\pi} \arctan \frac{k_1 + k_2}{k_1 - k_2} \f$ with
-\f$ k_1 \ge k_2 \f$ (the two are sorted here), in \f$ [-1, 1] \f$.
+`S = (2 / pi) atan((k1 + k2) / (k1 - k2))` with
+`k1 >= k2` (the two are sorted here), in `[-1, 1]`.
 
 The curvatures follow the package's sign convention: positive where the
 surface bends away from its outward normal (a sphere with outward normals
-has \f$ k_1 = k_2 = 1/r \f$). So \f$ S = 1 \f$ on a convex cap (a bump),
-\f$ -1 \f$ on a concave cup (a pit), \f$ 1/2 \f$ on a ridge (a convex
-cylinder), \f$ -1/2 \f$ on a rut, \f$ 0 \f$ on a symmetric saddle.
-Umbilic points (\f$ k_1 = k_2 \ne 0 \f$) get \f$ \pm 1 \f$ by their sign.
-Flat points (\f$ k_1 = k_2 = 0 \f$) have no shape index: the result is
+has `k1 = k2 = 1 / r`). So `S = 1` on a convex cap (a bump),
+-1 on a concave cup (a pit), 1/2 on a ridge (a convex
+cylinder), -1/2 on a rut, 0 on a symmetric saddle.
+Umbilic points (`k1 = k2 != 0`) get +1 or -1 by their sign.
+Flat points (`k1 = k2 = 0`) have no shape index: the result is
 NaN, as it is when a curvature is NaN. The shape index does not depend on
-the size of the shape: a sphere of any radius has \f$ S = 1 \f$.
+the size of the shape: a sphere of any radius has `S = 1`.
 
 J. J. Koenderink and A. J. van Doorn, "Surface shape and curvature
 scales", Image and Vision Computing 10(8), 1992, 557-564.
@@ -46,8 +46,8 @@ FT shape_index(FT k1, FT k2)
 \ingroup PkgConformalAlphaShapes3Curvature
 
 Koenderink's curvedness of a surface point from its principal curvatures:
-\f$ C = \sqrt{(k_1^2 + k_2^2) / 2} \ge 0 \f$, in inverse units of the
-points: \f$ 1/r \f$ on a sphere of radius \f$ r \f$, 0 on a plane. It says
+`C = sqrt((k1^2 + k2^2) / 2) >= 0`, in inverse units of the
+points: `1 / r` on a sphere of radius `r`, 0 on a plane. It says
 how much the surface bends, whatever its shape (`shape_index()`); NaN in,
 NaN out.
 
