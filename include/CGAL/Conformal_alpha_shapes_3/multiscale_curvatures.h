@@ -411,11 +411,11 @@ private:
                              + ": the shape was freed by estimate_curvatures() on an rvalue");
   }
 
-  // estimate_curvatures(), calling `before_fits()` once the shape is no
+  // estimate_curvatures(), calling `release_shape()` once the shape is no
   // longer read
-  template <class LayerDone, class BeforeFits>
+  template <class LayerDone, class ReleaseShape>
   void estimate_and_transfer(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
-                             Curvature_estimator estimator, LayerDone& layer_done, BeforeFits before_fits) const
+                             Curvature_estimator estimator, LayerDone& layer_done, ReleaseShape release_shape) const
   {
     require_shape("estimate_curvatures");
     // the fits and the nearest-surface search run in the working frame
@@ -428,43 +428,19 @@ private:
         n.kind() == Neighborhood::RADIUS ? Neighborhood::radius(m_input.length_from_input(n.value())) : n);
     const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
     auto shape_index = [&](Surface_vertex v) { return m_kept_index[input_index[v]]; };
-    const auto vertex_index = CGAL::get_initialized_vertex_index_map(surface, CGAL::parameters::default_values());
+    const std::vector<Vector> follow = m_orient_each_point ? normals_to_follow(surface) : std::vector<Vector>();
 
-    // transfer_to_points() in steps: what it reads of the shape is taken
-    // first (so that the shape may be freed), then the feet of the shape's
-    // vertices off the surface are found before the fits, so that the
-    // search tree over the faces is not held with the fits' values
-    const auto table = internal::shape_vertex_table<CGAL::Parallel_if_available_tag>(
-      m_shape, surface, boost::make_function_property_map<Surface_vertex>(shape_index), vertex_index);
-    std::vector<bool> off_surface(table.number_of_shape_vertices(), true);
-    for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
-      off_surface[v.second] = false;
-    const std::vector<double> far = internal::far_distances(m_shape, table, off_surface);
-    before_fits();
-    auto feet =
-      internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working, off_surface, far);
-    internal::drop_far_feet(feet, far);
-    std::vector<bool>().swap(off_surface);
-
-    std::vector<std::vector<Vertex_curvature<Kernel> > > values =
-      estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
+    // the fits are made when the transfer asks for them, once it has read
+    // the shape and searched the surface for the points off it, so that
+    // their values are held with neither
+    std::vector<std::vector<Vertex_curvature<Kernel> > > values;
+    auto fits = [&]() -> auto& {
+      values = estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
         surface, in_working_frame,
         parameters::sample_spacing(m_noise.spacing, parameters::noise_level(m_noise.noise * m_noise.spacing,
           parameters::estimator(estimator).vertex_point_map(working))));
-
-    // then the feet of the surface's vertices without a value in some
-    // layer: they lie on the surface, never far from it
-    std::vector<bool> needs_foot = internal::needs_foot(table, values);
-    for(const auto& foot : feet)
-      needs_foot[foot.shape_vertex] = false;
-    const std::size_t on_surface_count = std::size_t(std::count(needs_foot.begin(), needs_foot.end(), true));
-    const auto on_surface = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(
-      table, surface, working, needs_foot, std::vector<double>(on_surface_count, 0.));
-    const std::size_t off_surface_feet = feet.size();
-    feet.insert(feet.end(), on_surface.begin(), on_surface.end());
-    std::inplace_merge(feet.begin(), feet.begin() + std::ptrdiff_t(off_surface_feet), feet.end(),
-                       [](const auto& x, const auto& y) { return x.shape_vertex < y.shape_vertex; });
-
+      return values;
+    };
     std::vector<Point_curvature<Kernel> > layer;
     auto hand_over = [&](std::size_t k) {
       for(const std::pair<std::size_t, std::size_t>& copy : m_input.copies)
@@ -472,8 +448,8 @@ private:
       layer_done(k, std::move(layer));
       std::vector<Point_curvature<Kernel> >().swap(layer);  // in case `layer_done` did not take it
     };
-    internal::write_at_points<CGAL::Parallel_if_available_tag>(
-      table, surface, working, vertex_index, values, feet,
+    transfer_to_points<CGAL::Parallel_if_available_tag>(
+      m_shape, surface, fits,
       [&](std::size_t k) {
         // asked for layer k once layer k - 1 is written, and before the
         // vertex values of layer k are freed: the surface's properties
@@ -485,7 +461,9 @@ private:
         layer.resize(number_of_input_points());
         return internal::Input_units_writer<Kernel>{&m_input, &layer};
       },
-      m_orient_each_point ? normals_to_follow(surface) : std::vector<Vector>());
+      parameters::vertex_input_index_map(boost::make_function_property_map<Surface_vertex>(shape_index),
+        parameters::reference_normals(std::cref(follow), parameters::release_shape(release_shape)))
+        .vertex_point_map(working));
     if(!values.empty())
       hand_over(values.size() - 1);
   }

@@ -15,14 +15,58 @@
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/point_curvature.h>
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
+
+namespace internal {
+
+// transfer_to_points(), the layers made by `make_layers()` once the shape is
+// read and the points off the surface are found.
+template <class ConcurrencyTag, class ConformalAlphaShape, class PolygonMesh, class MakeLayers,
+          class PointCurvatureMaps, class NamedParameters>
+void transfer_in_steps(const ConformalAlphaShape& cas, const PolygonMesh& pmesh, MakeLayers make_layers,
+                       PointCurvatureMaps point_curvatures, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  static_assert(!CGAL::parameters::is_default_parameter<NamedParameters,
+                                                        internal_np_cas3::vertex_input_index_map_t>::value,
+                "transfer_to_points needs the named parameter vertex_input_index_map");
+  typedef typename CGAL::GetVertexPointMap<PolygonMesh, NamedParameters>::const_type Vertex_point_map;
+  // the surface is searched in the kernel of its points
+  typedef typename Kernel_traits<typename boost::property_traits<Vertex_point_map>::value_type>::Kernel GT;
+  const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, pmesh));
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
+  const std::vector<typename GT::Vector_3> no_normals;
+  // the shape is read first, all of it, so that `release_shape` may free it
+  const auto table = shape_vertex_table<ConcurrencyTag>(
+    cas, pmesh, get_parameter(np, internal_np_cas3::vertex_input_index_map), vertex_index);
+  std::vector<bool> off_surface = vertices_off_surface(table);
+  const std::vector<double> far = far_distances(cas, table, off_surface);
+  choose_parameter(get_parameter(np, internal_np_cas3::release_shape), []() {})();
+
+  // the feet of the vertices off the surface are found before the layers
+  // are made, so that the search tree is not held with their values
+  auto feet = surface_feet<ConcurrencyTag, GT>(table, pmesh, vpm, off_surface, far);
+  drop_far_feet(feet, far);
+  std::vector<bool>().swap(off_surface);
+  auto&& layers = make_layers();
+  add_feet_on_surface<ConcurrencyTag, GT>(table, pmesh, vpm, needs_foot(table, layers), feet);
+  write_at_points<ConcurrencyTag>(
+    table, pmesh, vpm, vertex_index, layers, feet, point_curvatures,
+    choose_parameter(CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals));
+}
+
+} // namespace internal
 
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
@@ -48,9 +92,11 @@ empty). Where several surface vertices stand for one vertex of the shape
 side of the surface gets the values seen from that side: normal and mean
 and principal curvatures negated, principal directions swapped.
 
-The nearest surface points are searched once for all layers; each layer's
-vertex values are released (`layers[k]` emptied) once it is transferred, so
-that they and the points' values are not all held at once.
+The nearest surface points are searched once for all layers, those of the
+shape's vertices that are not vertices of `pmesh` before `layers` is read
+(see the overload below); each layer's vertex values are released
+(`layers[k]` emptied) once it is transferred, so that they and the points'
+values are not all held at once.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_if_available_tag`
         (TBB's threads; the same results)
@@ -79,6 +125,11 @@ that they and the points' values are not all held at once.
     \cgalParamType{a random access range of `GT::Vector_3`}
     \cgalParamDefault{empty}
   \cgalParamNEnd
+  \cgalParamNBegin{release_shape}
+    \cgalParamDescription{called once the function no longer reads `cas`, before it searches the surface, so that the caller may free the shape then}
+    \cgalParamType{a function object callable as `release_shape()`}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 */
 template <class ConcurrencyTag = CGAL::Sequential_tag, class ConformalAlphaShape, class PolygonMesh, class GT,
@@ -88,26 +139,34 @@ void transfer_to_points(const ConformalAlphaShape& cas, const PolygonMesh& pmesh
                         PointCurvatureMaps point_curvatures,
                         const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  static_assert(!CGAL::parameters::is_default_parameter<NamedParameters,
-                                                        internal_np_cas3::vertex_input_index_map_t>::value,
-                "transfer_to_points needs the named parameter vertex_input_index_map");
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pmesh));
-  const auto vertex_index = CGAL::get_initialized_vertex_index_map(pmesh, np);
-  const std::vector<typename GT::Vector_3> no_normals;
-  const auto table = internal::shape_vertex_table<ConcurrencyTag>(
-    cas, pmesh, get_parameter(np, internal_np_cas3::vertex_input_index_map), vertex_index);
-  // the feet are found once for all layers, so that the search tree over
-  // the surface's faces is freed before the values are written
-  const std::vector<bool> needs_foot = internal::needs_foot(table, layers);
-  const std::vector<double> far = internal::far_distances(cas, table, needs_foot);
-  auto feet = internal::surface_feet<ConcurrencyTag, GT>(table, pmesh, vpm, needs_foot, far);
-  internal::drop_far_feet(feet, far);
-  internal::write_at_points<ConcurrencyTag>(
-    table, pmesh, vpm, vertex_index, layers, feet, point_curvatures,
-    choose_parameter(CGAL::parameters::get_parameter_reference(np, internal_np_cas3::reference_normals), no_normals));
+  internal::transfer_in_steps<ConcurrencyTag>(cas, pmesh, [&layers]() -> auto& { return layers; }, point_curvatures,
+                                              np);
+}
+
+/*!
+\ingroup PkgConformalAlphaShapes3Multiscale
+
+The same transfer, with layers made when it asks for them: `make_layers()`
+is called once, after `cas` is read (and `release_shape` called) and the
+nearest surface points of the shape's vertices that are not vertices of
+`pmesh` are found, and its layers are transferred as `layers` above. A
+caller that estimates the vertex values there (`estimate_vertex_curvatures()`)
+and frees the shape in `release_shape` holds the values with neither the
+shape nor the search tree over the surface's faces, as
+`Multiscale_curvatures` does; the points' values are those that the
+layers given at once would get.
+
+\tparam MakeLayers a function object callable as `make_layers()`, returning
+        a `std::vector<std::vector<Vertex_curvature<GT> > >` or a reference
+        to one (whose layers are then emptied as they are transferred)
+*/
+template <class ConcurrencyTag = CGAL::Sequential_tag, class ConformalAlphaShape, class PolygonMesh, class MakeLayers,
+          class PointCurvatureMaps, class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::enable_if_t<std::is_invocable<MakeLayers&>::value>
+transfer_to_points(const ConformalAlphaShape& cas, const PolygonMesh& pmesh, MakeLayers make_layers,
+                   PointCurvatureMaps point_curvatures, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::transfer_in_steps<ConcurrencyTag>(cas, pmesh, make_layers, point_curvatures, np);
 }
 
 } // namespace Conformal_alpha_shapes_3

@@ -20,8 +20,8 @@ namespace Conformal_alpha_shapes_3 {
 namespace internal {
 
 // What the transfer reads of the shape, taken from it at once, so that a
-// caller may free the shape before the values are written
-// (`Multiscale_curvatures` does when it is consumed).
+// caller may free the shape before the values are written (with the named
+// parameter `release_shape`).
 template <class Point>
 struct Shape_vertex_table
 {
@@ -75,6 +75,17 @@ std::vector<std::size_t> own_vertices(const Shape_vertex_table<Point>& table, co
       o = v.first;
   }
   return own;
+}
+
+// Whether each vertex of the shape (by vertex index) stands for no vertex of
+// the surface: in every layer, it takes the values of its foot on the surface.
+template <class Point>
+std::vector<bool> vertices_off_surface(const Shape_vertex_table<Point>& table)
+{
+  std::vector<bool> off(table.number_of_shape_vertices(), true);
+  for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
+    off[v.second] = false;
+  return off;
 }
 
 // Whether each vertex of the shape (by vertex index) takes its value from

@@ -183,6 +183,25 @@ void drop_far_feet(std::vector<Foot>& feet, const std::vector<double>& far)
       feet[k].face = decltype(feet[k].face)();
 }
 
+// Adds to `feet` (sorted by vertex) the feet of the vertices that `needs`
+// flags and that have none yet: vertices of the surface without a value in
+// some layer, whose feet are on the surface, never far; their search
+// starts with no reach, which surface_feet() widens until it finds a face.
+template <class ConcurrencyTag, class GT, class PolygonMesh, class VertexPointMap, class Foot>
+void add_feet_on_surface(const Shape_vertex_table<typename GT::Point_3>& table, const PolygonMesh& pmesh,
+                         const VertexPointMap& vpm, std::vector<bool> needs, std::vector<Foot>& feet)
+{
+  for(const Foot& foot : feet)
+    needs[foot.shape_vertex] = false;
+  const std::size_t count = std::size_t(std::count(needs.begin(), needs.end(), true));
+  const std::vector<Foot> on_surface =
+    surface_feet<ConcurrencyTag, GT>(table, pmesh, vpm, needs, std::vector<double>(count, 0.));
+  const std::size_t off_surface = feet.size();
+  feet.insert(feet.end(), on_surface.begin(), on_surface.end());
+  std::inplace_merge(feet.begin(), feet.begin() + std::ptrdiff_t(off_surface), feet.end(),
+                     [](const Foot& x, const Foot& y) { return x.shape_vertex < y.shape_vertex; });
+}
+
 } // namespace internal
 } // namespace Conformal_alpha_shapes_3
 } // namespace CGAL
