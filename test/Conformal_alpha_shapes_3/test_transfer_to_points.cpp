@@ -197,6 +197,23 @@ std::vector<CAS3::Vertex_curvature<K> > made_up_values(const Surface_mesh& mesh)
   return values;
 }
 
+// A sample of the unit sphere, its shape, and the shape's surface with the
+// cap above z = 0.8 cut off: the points of the cap are off the surface.
+struct Sphere_without_cap
+{
+  std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(3000, 1, 1, 1);
+  Cas cas{pts.begin(), pts.end()};
+  Surface_mesh mesh;
+  Surface_mesh::Property_map<Surface_mesh::Vertex_index, std::size_t> input_index =
+    mesh.add_property_map<Surface_mesh::Vertex_index, std::size_t>("v:input_index").first;
+
+  Sphere_without_cap()
+  {
+    CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
+    cas3_test::remove_cap_above(mesh, 0.8);
+  }
+};
+
 // Where the nearest surface point is a vertex without a value (its own fit
 // undefined), the point takes the mean of that vertex's neighbors with
 // values, whichever of the vertex's facets the search named: made-up values
@@ -255,13 +272,9 @@ BOOST_AUTO_TEST_CASE(a_vertex_without_a_value_takes_its_neighbors_mean)
 // point is a corner (many are: the rim of the cut is convex).
 BOOST_AUTO_TEST_CASE(points_off_the_surface_interpolate_over_their_facet)
 {
-  typedef Surface_mesh::Vertex_index Vertex;
-  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(3000, 1, 1, 1);
-  const Cas cas(pts.begin(), pts.end());
-  Surface_mesh mesh;
-  auto input_index = mesh.add_property_map<Vertex, std::size_t>("v:input_index").first;
-  CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
-  cas3_test::remove_cap_above(mesh, 0.8);
+  const Sphere_without_cap sphere;
+  const std::vector<Point>& pts = sphere.pts;
+  const Surface_mesh& mesh = sphere.mesh;
   const std::vector<CAS3::Vertex_curvature<K> > values = made_up_values(mesh);
   std::vector<double> vertex_values;
   for(const CAS3::Vertex_curvature<K>& c : values)
@@ -269,8 +282,8 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_interpolate_over_their_facet)
   std::sort(vertex_values.begin(), vertex_values.end());
   std::vector<std::vector<CAS3::Vertex_curvature<K> > > layers(1, values);
   std::vector<CAS3::Point_curvature<K> > out(pts.size());
-  CAS3::transfer_to_points(cas, mesh, layers, [&](std::size_t) { return CGAL::make_property_map(out); },
-                           CAS3::parameters::vertex_input_index_map(input_index));
+  CAS3::transfer_to_points(sphere.cas, mesh, layers, [&](std::size_t) { return CGAL::make_property_map(out); },
+                           CAS3::parameters::vertex_input_index_map(sphere.input_index));
   std::size_t nearest = 0, a_corner_value = 0;
   for(const CAS3::Point_curvature<K>& c : out)
     if(c.source == CAS3::NEAREST_SURFACE_POINT)
@@ -281,6 +294,52 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_interpolate_over_their_facet)
   BOOST_TEST_MESSAGE(nearest << " points off the surface, " << a_corner_value << " with a corner's value");
   BOOST_TEST(nearest > 50u);
   BOOST_TEST(nearest - a_corner_value >= 30u);
+}
+
+// Layers made when the transfer asks for them, after it has called
+// `release_shape`, give the points the values that the same layers given at
+// once give them: made-up values on a sphere whose cap is cut off, every
+// tenth vertex's cleared, so that points off the surface and vertices
+// without a value both take values at their nearest surface point.
+BOOST_AUTO_TEST_CASE(layers_made_when_asked_give_the_values_of_layers_given)
+{
+  const Sphere_without_cap sphere;
+  const std::vector<Point>& pts = sphere.pts;
+  const Surface_mesh& mesh = sphere.mesh;
+  std::vector<CAS3::Vertex_curvature<K> > values = made_up_values(mesh);
+  for(std::size_t v = 0; v < values.size(); v += 10)
+    values[v] = CAS3::Vertex_curvature<K>();
+
+  std::vector<std::vector<CAS3::Vertex_curvature<K> > > layers(2, values);
+  std::vector<std::vector<CAS3::Point_curvature<K> > > given(2, std::vector<CAS3::Point_curvature<K> >(pts.size()));
+  CAS3::transfer_to_points(sphere.cas, mesh, layers,
+                           [&](std::size_t k) { return CGAL::make_property_map(given[k]); },
+                           CAS3::parameters::vertex_input_index_map(sphere.input_index));
+  BOOST_TEST((layers[0].empty() && layers[1].empty()));
+
+  std::vector<std::vector<CAS3::Point_curvature<K> > > made(2, std::vector<CAS3::Point_curvature<K> >(pts.size()));
+  int released = 0, asked = 0;
+  CAS3::transfer_to_points(
+    sphere.cas, mesh,
+    [&]() {
+      BOOST_TEST(released == 1);
+      ++asked;
+      return std::vector<std::vector<CAS3::Vertex_curvature<K> > >(2, values);
+    },
+    [&](std::size_t k) { return CGAL::make_property_map(made[k]); },
+    CAS3::parameters::vertex_input_index_map(sphere.input_index,
+                                             CAS3::parameters::release_shape([&]() { ++released; })));
+  BOOST_TEST(released == 1);
+  BOOST_TEST(asked == 1);
+  std::size_t nearest = 0, differing = 0;
+  for(std::size_t k = 0; k < 2; ++k)
+    for(std::size_t i = 0; i < pts.size(); ++i)
+    {
+      nearest += given[k][i].source == CAS3::NEAREST_SURFACE_POINT ? 1 : 0;
+      differing += same_bits(given[k][i], made[k][i]) ? 0 : 1;
+    }
+  BOOST_TEST(nearest > 100u);
+  BOOST_TEST(differing == 0u);
 }
 
 // The nearest surface points found with a search tree over the faces near

@@ -10,6 +10,8 @@
 #include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>
 #include <CGAL/Conformal_alpha_shapes_3/extract_surface.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/input_hygiene.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/point_normals_to_follow.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/working_frame.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/scales_and_neighborhoods.h>
 #include <CGAL/Conformal_alpha_shapes_3/suggest_scale.h>
@@ -22,64 +24,16 @@
 
 #include <boost/property_map/function_property_map.hpp>
 
-#include <algorithm>
-#include <cmath>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
-
-namespace internal {
-
-// A given estimate in the working frame, checked first. The frame's scale
-// is a power of two, so the spacing of a run's `noise()` given back to a
-// run on the same points comes back to the same bits.
-template <class Kernel>
-Noise_estimate working_noise(const Noise_estimate& given, const Normalized_input<Kernel>& input)
-{
-  if(!(std::isfinite(given.spacing) && given.spacing > 0))
-    throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing must be finite and positive, not "
-                                + std::to_string(given.spacing));
-  if(!(given.noise >= 0 && given.noise_24 >= 0))
-    throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's noise must be a number, 0 or more, not "
-                                + std::to_string(given.noise) + " (16 neighbors) and "
-                                + std::to_string(given.noise_24) + " (24 neighbors)");
-  Noise_estimate working = given;
-  working.spacing = input.length_from_input(given.spacing);
-  if(!(std::isfinite(working.spacing) && working.spacing > 0))
-    throw std::invalid_argument("Multiscale_curvatures: the noise_estimate's spacing " + std::to_string(given.spacing)
-                                + " is out of scale with these points (of size "
-                                + std::to_string(input.size()) + ")");
-  return working;
-}
-
-// Writes the values of the shape's input point `i` at its input index, in input units.
-template <class Kernel>
-struct Input_units_writer
-{
-  const Normalized_input<Kernel>* input;
-  std::vector<Point_curvature<Kernel> >* layer;
-
-  friend void put(const Input_units_writer& w, std::size_t i, Point_curvature<Kernel> c)
-  {
-    const Normalized_input<Kernel>& input = *w.input;
-    c.distance = input.length_to_input(c.distance);
-    c.radius = input.length_to_input(c.radius);
-    c.mean_curvature = input.curvature_to_input(c.mean_curvature);
-    c.gaussian_curvature = input.gaussian_curvature_to_input(c.gaussian_curvature);
-    c.principal.max_curvature = input.curvature_to_input(c.principal.max_curvature);
-    c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
-    c.uncertainty.mean_curvature = input.curvature_to_input(c.uncertainty.mean_curvature);
-    c.uncertainty.gaussian_curvature = input.gaussian_curvature_to_input(c.uncertainty.gaussian_curvature);
-    (*w.layer)[input.input_index[i]] = c;
-  }
-};
-
-} // namespace internal
 
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale
@@ -177,25 +131,11 @@ public:
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
     m_extraction = choose_parameter(get_parameter(np, internal_np_cas3::surface_extraction), ADVANCING_FRONT);
-    m_reference_normals = choose_parameter(get_parameter(np, internal_np_cas3::reference_normals),
-                                           std::vector<Vector>());
     m_orient_each_point = choose_parameter(get_parameter(np, internal_np_cas3::orient_each_point), true);
     m_input = internal::normalize_input<Kernel>(std::vector<Point>(first, last));
-    if(!m_reference_normals.empty() && m_reference_normals.size() != m_input.is_outlier.size())
-      throw std::invalid_argument("Multiscale_curvatures: " + std::to_string(m_reference_normals.size())
-                                  + " reference normals for " + std::to_string(m_input.is_outlier.size())
-                                  + " points");
-    if(!m_reference_normals.empty())  // those of the kept points
-    {
-      for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
-        m_reference_normals[i] = m_reference_normals[m_input.input_index[i]];
-      m_reference_normals.resize(m_input.input_index.size());
-    }
-    m_kept_index.assign(m_input.is_outlier.size(), std::size_t(-1));
-    for(std::size_t i = 0; i < m_input.input_index.size(); ++i)
-      m_kept_index[m_input.input_index[i]] = i;
-    for(const std::pair<std::size_t, std::size_t>& copy : m_input.copies)
-      m_kept_index[copy.first] = m_kept_index[copy.second];
+    m_reference_normals = internal::kept_reference_normals(
+      choose_parameter(get_parameter(np, internal_np_cas3::reference_normals), std::vector<Vector>()), m_input);
+    m_kept_index = internal::kept_indices(m_input);
     std::vector<Point> points = std::move(m_input.points);
     m_input.points = std::vector<Point>();
 
@@ -272,17 +212,7 @@ public:
   std::vector<double> closing_values() const
   {
     require_shape("closing_values");
-    const std::vector<double> by_vertex = front().closing_values();
-    std::vector<double> closing(number_of_input_points(), std::numeric_limits<double>::quiet_NaN());
-    std::vector<bool> taken(by_vertex.size(), false);
-    for(std::size_t k = 0; k < m_input.input_index.size(); ++k)
-    {
-      const std::size_t v = m_shape.input_vertex(k)->vertex_index();
-      if(!taken[v])
-        closing[m_input.input_index[k]] = by_vertex[v];
-      taken[v] = true;
-    }
-    return closing;
+    return internal::by_first_input_point(front().closing_values(), m_shape, m_input);
   }
 
   /// Replaces `surface` with the surface at scale `a` (`extract_surface()`),
@@ -300,21 +230,7 @@ public:
             input_index, parameters::reference_normals(std::cref(m_reference_normals))))
         : extract_surface(m_shape, a, surface,
                           parameters::vertex_input_index_map(input_index, parameters::surface_extraction(m_extraction)));
-    for(Surface_vertex v : surface.vertices())
-    {
-      input_index[v] = m_input.input_index[input_index[v]];
-      surface.point(v) = m_input.to_input(surface.point(v));
-    }
-    // the outliers are input points too, off every surface, and the
-    // copies of a point are where their first is
-    std::vector<bool> on_surface(number_of_input_points(), false);
-    for(Surface_vertex v : surface.vertices())
-      on_surface[input_index[v]] = true;
-    for(const std::pair<std::size_t, std::size_t>& copy : m_input.copies)
-      if(!on_surface[copy.second])
-        ++report.number_of_points_off_surface;
-    report.number_of_points_off_surface += m_input.outliers.size();
-    report.number_of_input_points += m_input.outliers.size() + m_input.copies.size();
+    internal::surface_to_input(surface, input_index, m_input, report);
     return report;
   }
 
@@ -411,60 +327,35 @@ private:
                              + ": the shape was freed by estimate_curvatures() on an rvalue");
   }
 
-  // estimate_curvatures(), calling `before_fits()` once the shape is no
+  // estimate_curvatures(), calling `release_shape()` once the shape is no
   // longer read
-  template <class LayerDone, class BeforeFits>
+  template <class LayerDone, class ReleaseShape>
   void estimate_and_transfer(Surface& surface, const std::vector<Neighborhood>& neighborhoods,
-                             Curvature_estimator estimator, LayerDone& layer_done, BeforeFits before_fits) const
+                             Curvature_estimator estimator, LayerDone& layer_done, ReleaseShape release_shape) const
   {
     require_shape("estimate_curvatures");
     // the fits and the nearest-surface search run in the working frame
     const auto working = get(CGAL::dynamic_vertex_property_t<Point>(), surface);
     for(Surface_vertex v : surface.vertices())
       put(working, v, m_input.to_normalized(surface.point(v)));
-    std::vector<Neighborhood> in_working_frame;
-    for(const Neighborhood& n : neighborhoods)
-      in_working_frame.push_back(
-        n.kind() == Neighborhood::RADIUS ? Neighborhood::radius(m_input.length_from_input(n.value())) : n);
+    const std::vector<Neighborhood> in_working_frame = internal::working_neighborhoods(neighborhoods, m_input);
     const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
     auto shape_index = [&](Surface_vertex v) { return m_kept_index[input_index[v]]; };
-    const auto vertex_index = CGAL::get_initialized_vertex_index_map(surface, CGAL::parameters::default_values());
+    const std::vector<Vector> follow = m_orient_each_point
+                                         ? internal::point_normals_to_follow(surface, m_reference_normals, m_kept_index)
+                                         : std::vector<Vector>();
 
-    // transfer_to_points() in steps: what it reads of the shape is taken
-    // first (so that the shape may be freed), then the feet of the shape's
-    // vertices off the surface are found before the fits, so that the
-    // search tree over the faces is not held with the fits' values
-    const auto table = internal::shape_vertex_table<CGAL::Parallel_if_available_tag>(
-      m_shape, surface, boost::make_function_property_map<Surface_vertex>(shape_index), vertex_index);
-    std::vector<bool> off_surface(table.number_of_shape_vertices(), true);
-    for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
-      off_surface[v.second] = false;
-    const std::vector<double> far = internal::far_distances(m_shape, table, off_surface);
-    before_fits();
-    auto feet =
-      internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(table, surface, working, off_surface, far);
-    internal::drop_far_feet(feet, far);
-    std::vector<bool>().swap(off_surface);
-
-    std::vector<std::vector<Vertex_curvature<Kernel> > > values =
-      estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
+    // the fits are made when the transfer asks for them, once it has read
+    // the shape and searched the surface for the points off it, so that
+    // their values are held with neither
+    std::vector<std::vector<Vertex_curvature<Kernel> > > values;
+    auto fits = [&]() -> auto& {
+      values = estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
         surface, in_working_frame,
         parameters::sample_spacing(m_noise.spacing, parameters::noise_level(m_noise.noise * m_noise.spacing,
           parameters::estimator(estimator).vertex_point_map(working))));
-
-    // then the feet of the surface's vertices without a value in some
-    // layer: they lie on the surface, never far from it
-    std::vector<bool> needs_foot = internal::needs_foot(table, values);
-    for(const auto& foot : feet)
-      needs_foot[foot.shape_vertex] = false;
-    const std::size_t on_surface_count = std::size_t(std::count(needs_foot.begin(), needs_foot.end(), true));
-    const auto on_surface = internal::surface_feet<CGAL::Parallel_if_available_tag, Kernel>(
-      table, surface, working, needs_foot, std::vector<double>(on_surface_count, 0.));
-    const std::size_t off_surface_feet = feet.size();
-    feet.insert(feet.end(), on_surface.begin(), on_surface.end());
-    std::inplace_merge(feet.begin(), feet.begin() + std::ptrdiff_t(off_surface_feet), feet.end(),
-                       [](const auto& x, const auto& y) { return x.shape_vertex < y.shape_vertex; });
-
+      return values;
+    };
     std::vector<Point_curvature<Kernel> > layer;
     auto hand_over = [&](std::size_t k) {
       for(const std::pair<std::size_t, std::size_t>& copy : m_input.copies)
@@ -472,8 +363,8 @@ private:
       layer_done(k, std::move(layer));
       std::vector<Point_curvature<Kernel> >().swap(layer);  // in case `layer_done` did not take it
     };
-    internal::write_at_points<CGAL::Parallel_if_available_tag>(
-      table, surface, working, vertex_index, values, feet,
+    transfer_to_points<CGAL::Parallel_if_available_tag>(
+      m_shape, surface, fits,
       [&](std::size_t k) {
         // asked for layer k once layer k - 1 is written, and before the
         // vertex values of layer k are freed: the surface's properties
@@ -481,70 +372,15 @@ private:
         if(k > 0)
           hand_over(k - 1);
         if(k + 1 == values.size())
-          set_surface_properties(surface, values[k]);
+          internal::set_surface_properties(surface, values[k], m_input);
         layer.resize(number_of_input_points());
         return internal::Input_units_writer<Kernel>{&m_input, &layer};
       },
-      m_orient_each_point ? normals_to_follow(surface) : std::vector<Vector>());
+      parameters::vertex_input_index_map(boost::make_function_property_map<Surface_vertex>(shape_index),
+        parameters::reference_normals(std::cref(follow), parameters::release_shape(release_shape)))
+        .vertex_point_map(working));
     if(!values.empty())
       hand_over(values.size() - 1);
-  }
-
-  // By kept point, the reference normal its values follow: its own where
-  // the reference normals of its sheet (a connected part of `surface`)
-  // are consistent, as extract_surface() decides it (at least 3/4 of its
-  // vertices agree with the sheet), else none (a null vector); a point off
-  // the surface follows its own when most of the surface's vertices do.
-  std::vector<Vector> normals_to_follow(const Surface& surface) const
-  {
-    if(m_reference_normals.empty())
-      return {};
-    const auto input_index = surface.template property_map<Surface_vertex, std::size_t>("v:input_index").first;
-    std::vector<std::size_t> root(surface.num_vertices());
-    for(std::size_t v = 0; v < root.size(); ++v)
-      root[v] = v;
-    auto find = [&](std::size_t v) {
-      while(root[v] != v)
-        v = root[v] = root[root[v]];
-      return v;
-    };
-    std::vector<Vector> oriented(surface.num_vertices(), Vector(CGAL::NULL_VECTOR));
-    for(typename Surface::Face_index f : surface.faces())
-    {
-      const typename Surface::Halfedge_index h = surface.halfedge(f);
-      const Surface_vertex a = surface.source(h), b = surface.target(h), c = surface.target(surface.next(h));
-      const Vector area_normal = CGAL::cross_product(surface.point(b) - surface.point(a),
-                                                     surface.point(c) - surface.point(a));
-      for(Surface_vertex v : {a, b, c})
-        oriented[v.idx()] = oriented[v.idx()] + area_normal;
-      root[find(a.idx())] = find(b.idx());
-      root[find(b.idx())] = find(c.idx());
-    }
-    std::vector<std::size_t> agree(root.size(), 0), count(root.size(), 0);
-    for(Surface_vertex v : surface.vertices())
-    {
-      const std::size_t r = find(v.idx());
-      agree[r] += oriented[v.idx()] * m_reference_normals[m_kept_index[input_index[v]]] > 0 ? 1 : 0;
-      ++count[r];
-    }
-    std::vector<Vector> follow(m_reference_normals.size(), Vector(CGAL::NULL_VECTOR));
-    std::size_t following = 0;
-    std::vector<bool> on_surface(m_reference_normals.size(), false);
-    for(Surface_vertex v : surface.vertices())
-    {
-      const std::size_t r = find(v.idx()), k = m_kept_index[input_index[v]];
-      on_surface[k] = true;
-      if(double(agree[r]) >= internal::consistent_share * double(count[r]))
-      {
-        follow[k] = m_reference_normals[k];
-        ++following;
-      }
-    }
-    if(2 * following > surface.number_of_vertices())
-      for(std::size_t k = 0; k < follow.size(); ++k)
-        if(!on_surface[k])
-          follow[k] = m_reference_normals[k];
-    return follow;
   }
 
   // The front grown with no bound, once.
@@ -553,33 +389,6 @@ private:
     if(!m_front)
       m_front = std::make_unique<Surface_front<Shape> >(m_shape);
     return *m_front;
-  }
-
-  // The surface's properties (see the class description) from `values`, in input units.
-  void set_surface_properties(Surface& surface, const std::vector<Vertex_curvature<Kernel> >& values) const
-  {
-    auto normal = surface.template add_property_map<Surface_vertex, Vector>("v:normal").first;
-    auto mean = surface.template add_property_map<Surface_vertex, double>("v:mean_curvature").first;
-    auto gaussian = surface.template add_property_map<Surface_vertex, double>("v:gaussian_curvature").first;
-    auto used_radius = surface.template add_property_map<Surface_vertex, double>("v:radius").first;
-    auto k1 = surface.template add_property_map<Surface_vertex, double>("v:k1").first;
-    auto k2 = surface.template add_property_map<Surface_vertex, double>("v:k2").first;
-    auto d1 = surface.template add_property_map<Surface_vertex, Vector>("v:d1").first;
-    auto d2 = surface.template add_property_map<Surface_vertex, Vector>("v:d2").first;
-    for(Surface_vertex v : surface.vertices())
-    {
-      Vertex_curvature<Kernel> c = values[v.idx()];
-      c.principal.max_curvature = m_input.curvature_to_input(c.principal.max_curvature);
-      c.principal.min_curvature = m_input.curvature_to_input(c.principal.min_curvature);
-      normal[v] = c.normal;
-      mean[v] = c.mean_curvature();
-      gaussian[v] = c.gaussian_curvature();
-      used_radius[v] = m_input.length_to_input(c.radius);
-      k1[v] = c.principal.max_curvature;
-      k2[v] = c.principal.min_curvature;
-      d1[v] = c.principal.max_direction;
-      d2[v] = c.principal.min_direction;
-    }
   }
 
   internal::Normalized_input<Kernel> m_input;  // the working frame and the outliers (its points moved out)
@@ -608,23 +417,6 @@ struct Curvature_layer
   Surface_report surface;             ///< what the extraction did
   std::vector<Point_curvature<Kernel> > points;  ///< by input index
 };
-
-/// \ingroup PkgConformalAlphaShapes3Multiscale
-/// The scales of `multiscale_curvatures()` and of the program when none are
-/// named: the automatic one (see the manual for why coarser conformal scales
-/// are not in the default: above the automatic scale the advancing front
-/// gives nearly the same surface; the neighborhood radius is what coarsens).
-inline std::vector<Scale> default_scales() { return {Scale::automatic()}; }
-
-/// \ingroup PkgConformalAlphaShapes3Multiscale
-/// The neighborhoods of `multiscale_curvatures()` and of the program when
-/// none are named: the automatic one, then radii of 2, 4, 8 and 16 sample
-/// spacings, from the finest detail to a summary of larger regions.
-inline std::vector<Neighborhood> default_neighborhoods()
-{
-  return {Neighborhood::automatic(), Neighborhood::spacings(2), Neighborhood::spacings(4),
-          Neighborhood::spacings(8), Neighborhood::spacings(16)};
-}
 
 /*!
 \ingroup PkgConformalAlphaShapes3Multiscale

@@ -38,6 +38,7 @@ enum noise_estimate_t { noise_estimate };
 enum fit_center_key_map_t { fit_center_key_map };
 enum orient_each_point_t { orient_each_point };
 enum vertex_curvature_uncertainty_map_t { vertex_curvature_uncertainty_map };
+enum release_shape_t { release_shape };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -96,6 +97,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(noise_estimate)
 CGAL_CAS3_ADD_NAMED_PARAMETER(fit_center_key_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(orient_each_point)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_curvature_uncertainty_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(release_shape)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 

@@ -74,6 +74,23 @@ private:
   double m_value;
 };
 
+/// \ingroup PkgConformalAlphaShapes3Multiscale
+/// The scales of `multiscale_curvatures()` and of the program when none are
+/// named: the automatic one (see the manual for why coarser conformal scales
+/// are not in the default: above the automatic scale the advancing front
+/// gives nearly the same surface; the neighborhood radius is what coarsens).
+inline std::vector<Scale> default_scales() { return {Scale::automatic()}; }
+
+/// \ingroup PkgConformalAlphaShapes3Multiscale
+/// The neighborhoods of `multiscale_curvatures()` and of the program when
+/// none are named: the automatic one, then radii of 2, 4, 8 and 16 sample
+/// spacings, from the finest detail to a summary of larger regions.
+inline std::vector<Neighborhood> default_neighborhoods()
+{
+  return {Neighborhood::automatic(), Neighborhood::spacings(2), Neighborhood::spacings(4),
+          Neighborhood::spacings(8), Neighborhood::spacings(16)};
+}
+
 } // namespace Conformal_alpha_shapes_3
 } // namespace CGAL
 

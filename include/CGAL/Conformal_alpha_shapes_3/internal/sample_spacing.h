@@ -6,6 +6,7 @@
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 
+#include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
