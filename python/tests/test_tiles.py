@@ -80,8 +80,10 @@ def scene_run(client, tmp_path_factory):
     return points, label, summary, one, folder
 
 
-def assert_same_answer(points, one, summary, folder, a_tolerance):
-    """A tiled run's merged file (in ``folder``) against ``one`` run of the module."""
+def assert_same_answer(points, one, summary, folder, a_tolerance, h_tolerance_99=None):
+    """A tiled run's merged file (in ``folder``) against ``one`` run of the
+    module; with ``h_tolerance_99``, H at 99% of the points within that
+    share of the median |H|."""
     assert summary["spacing"] == pytest.approx(one.spacing, rel=1e-12)
     assert summary["noise"] == pytest.approx(one.noise, rel=1e-12)
     assert summary["denoised"] == one.denoised
@@ -106,12 +108,20 @@ def assert_same_answer(points, one, summary, folder, a_tolerance):
         # the parts' floats: the large radii's centers are those of one run too
         relative = np.median(np.abs(H[both] - reference[both])) / np.median(np.abs(reference[both]))
         assert relative <= 1e-6, (name, relative)
+        if h_tolerance_99 is not None:
+            # the points near the tiles' borders too, which a halo narrower
+            # than the largest radius changes while the median stays put
+            worst = np.quantile(np.abs(H[both] - reference[both]), 0.99) / np.median(np.abs(reference[both]))
+            assert worst <= h_tolerance_99, (name, worst)
 
 
 def test_tiled_run_equals_one_run(scene_run):
+    """The automatic scale within 0.2% of one run's (measured: 0.012%), and
+    H at 99% of the points within 1e-5 of the median |H| in every layer
+    (measured: under 1e-6; with a third of the halo, 0.1 in r16s)."""
     points, _, summary, one, folder = scene_run
     assert summary["tiles"] == 8
-    assert_same_answer(points, one, summary, folder / "out", 0.01)
+    assert_same_answer(points, one, summary, folder / "out", 0.002, h_tolerance_99=1e-5)
 
 
 def test_a_scan_in_tiles_equals_one_run(client, tmp_path):
