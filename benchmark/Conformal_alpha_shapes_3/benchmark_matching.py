@@ -124,27 +124,29 @@ def curvature(build, xyz, output):
 
 
 def surface(build, work, pdb, chain, complex_chains=None):
-    """Points, normals and curvature values (the PLY's vertex array) of one chain's
-    surface, and which points are the chain's: all of them, or, sampled in a complex, those nearest to
-    its atoms (cached in work)."""
-    chains = complex_chains or chain
-    base = os.path.join(work, f"{os.path.basename(pdb)[:-4]}_{chains}")
+    """Points, normals and curvature values (the PLY's vertex array) of one chain's surface: sampled
+    alone, or sampled in a complex, then only the points nearest to the chain's atoms kept (and their
+    curvature computed on those points alone). Cached in work."""
     tools = os.path.join(build, "examples", "Conformal_alpha_shapes_3")
-    if not os.path.exists(base + ".xyz"):
-        subprocess.run([os.path.join(tools, "molecular_surface_points"), pdb, base + ".xyz", "--chains", chains,
-                        "--normals", "--spacing", "0.4", "--quiet"], check=True)
+    stem = os.path.join(work, os.path.basename(pdb)[:-4] + "_")
+    for chains in filter(None, (chain, complex_chains)):
+        if not os.path.exists(stem + chains + ".xyz"):
+            subprocess.run([os.path.join(tools, "molecular_surface_points"), pdb, stem + chains + ".xyz", "--chains",
+                            chains, "--normals", "--spacing", "0.4", "--quiet"], check=True)
+    base = stem + (f"{chain}_in_{complex_chains}" if complex_chains else chain)
+    if complex_chains and not os.path.exists(base + ".xyz"):
+        from scipy.spatial import cKDTree
+        xyz = np.loadtxt(stem + complex_chains + ".xyz")
+        centres, radii, owner = atoms(pdb, complex_chains)
+        _, index = cKDTree(centres).query(xyz[:, :3], k=8)
+        gap = np.linalg.norm(xyz[:, None, :3] - centres[index], axis=2) - radii[index]  # to each atom's sphere
+        mine = owner[index[np.arange(len(xyz)), np.argmin(gap, axis=1)]] == chain
+        np.savetxt(base + ".xyz", xyz[mine], fmt="%.6f")
     ply = os.path.join(base + "_curvature", "curvatures.ply")
     if not os.path.exists(ply):
         curvature(build, base + ".xyz", base + "_curvature")
     xyz = np.loadtxt(base + ".xyz")
-    mine = np.ones(len(xyz), dtype=bool)
-    if complex_chains:
-        from scipy.spatial import cKDTree
-        centres, radii, owner = atoms(pdb, complex_chains)
-        near, index = cKDTree(centres).query(xyz[:, :3], k=8)
-        gap = np.linalg.norm(xyz[:, None, :3] - centres[index], axis=2) - radii[index]  # to each atom's sphere
-        mine = owner[index[np.arange(len(xyz)), np.argmin(gap, axis=1)]] == chain
-    return xyz[:, :3], xyz[:, 3:6], read_ply(ply), mine
+    return xyz[:, :3], xyz[:, 3:6], read_ply(ply), base + ".xyz"
 
 
 def fpfh(points, normals, radius):
@@ -196,10 +198,9 @@ def main():
         pdb, chain_a, chain_b, complex_chains = PAIRS[key]
         if not os.path.exists(pdb):
             sys.exit(f"{pdb} is missing: install pymol-data (apt-get install pymol-data)")
-        xa, nxa, va, mine = surface(args.build, args.work, pdb, chain_a, complex_chains)
-        pb, nb, vb, _ = surface(args.build, args.work, pdb, chain_b)
-        pa, na = xa[mine], nxa[mine]
-        la, ca_normals = layers_from_ply(va[mine])
+        pa, na, va, xyz_a = surface(args.build, args.work, pdb, chain_a, complex_chains)
+        pb, nb, vb, xyz_b = surface(args.build, args.work, pdb, chain_b)
+        la, ca_normals = layers_from_ply(va)
         lb, cb_normals = layers_from_ply(vb)
         ca_a, ca_b = ca_atoms(pdb, chain_a), ca_atoms(pdb, chain_b)
         common = sorted(set(ca_a) & set(ca_b))
@@ -226,20 +227,18 @@ def main():
         print(f"{name:20} registration B onto A: CA RMSD {rmsd:.2f} A, {matches.consistent:.0%} of the matches"
               " consistent")
         # the curvature timed again now, the machine as loaded as for the matching just before
-        stem = os.path.join(args.work, os.path.basename(pdb)[:-4] + "_")
-        seconds_curvature = sum(curvature(args.build, stem + chains + ".xyz", os.path.join(args.work, "timing"))
-                                for chains in (complex_chains or chain_a, chain_b))
-        print(f"{name:20} time: curvature of the two surfaces ({len(xa)} + {len(pb)} points) "
+        seconds_curvature = sum(curvature(args.build, xyz, os.path.join(args.work, "timing")) for xyz in (xyz_a, xyz_b))
+        print(f"{name:20} time: curvature of the two surfaces ({len(pa)} + {len(pb)} points) "
               f"{seconds_curvature:.1f} s, descriptors and matching ({len(pa)} + {len(pb)} points) {seconds:.1f} s")
 
         if not args.no_fpfh:
             start = time.time()
-            fa, fb = fpfh(xa, nxa, 10.0)[mine], fpfh(pb, nb, 10.0)
+            fa, fb = fpfh(pa, na, 10.0), fpfh(pb, nb, 10.0)
             d = m.chi_square_distances(fa[centres], fb[candidates])
             top1, top10 = rates(d, true_places, pb[candidates])
             print(f"{name:20} {'FPFH 10 A':20} {top1:5.3f}  {top10:5.3f}  {time.time() - start:7.1f}")
             start = time.time()
-            fa, fb = fpfh(xa, nxa, 3.0)[mine], fpfh(pb, nb, 3.0)
+            fa, fb = fpfh(pa, na, 3.0), fpfh(pb, nb, 3.0)
             da = ring_average(pa, fa, centres, RINGS)
             db = ring_average(pb, fb, candidates, RINGS)
             d = m.chi_square_distances(da, db)
