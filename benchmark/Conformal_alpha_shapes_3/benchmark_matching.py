@@ -21,10 +21,10 @@ centres, candidates and rings (0-2, 2-4, ... 12-14 A):
     chi-square distances.
 The buried pairs (hpv-buried, tii-buried) match a chain seen inside its
 complex against the same chain alone: the complex of the two chains is
-sampled and its curvature computed, then only the points nearest (surface
-distance) to the first chain's atoms are kept, so its interface is missing
-and the surface next to it is the complex's; both methods' features are
-computed on the complex. Also: the registration of the second chain onto
+sampled, then only the points nearest (surface distance) to the first
+chain's atoms are kept, so its interface is missing and the surface next
+to it is the complex's; both methods' features (curvature, FPFH) are
+computed on those points, as they are on the chain alone's. Also: the registration of the second chain onto
 the first from the matches (CA RMSD), a rotated, translated copy of the
 first chain matched against itself (invariance), and the times (wall):
 the descriptors and matching of the pair, and the curvature of the two

@@ -51,6 +51,10 @@ def test_bad_arguments():
     b = cas.region_descriptors(points, layer, 5, rings=(2.0, 4.0))
     with pytest.raises(ValueError, match="different layouts"):
         cas.match_regions(a, b)
+    with pytest.raises(ValueError, match="thinning"):
+        cas.region_descriptors(points, layer, 5, thinning=0)
+    # every point counted or one in three beyond dense_radius: the same layout, so comparable
+    assert cas.region_descriptors(points, layer, 5, thinning=1).descriptors.shape == a.descriptors.shape
     with pytest.raises(ValueError, match="ring_weights"):
         cas.region_descriptors(points, layer, 5, ring_weights=(1.0, 2.0))
     with pytest.raises(ValueError, match="different layouts"):
