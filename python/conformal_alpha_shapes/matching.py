@@ -122,12 +122,16 @@ class Regions:
             the curvedness bins, then (with normals) the normal cosine bins
             and the height bins.
         rings: the rings' outer radii; bins: (shape index bins, curvedness bins);
-            histograms: the number of histograms in a row; histogram_bins and
-            histogram_weights: (histograms,) each histogram's bins and its
-            weight in ``histogram_distances``.
+            histograms: the number of histograms in a row; histogram_bins,
+            histogram_weights and histogram_kinds: (histograms,) each
+            histogram's bins, its weight in ``histogram_distances`` and its
+            kind (what it counts, whatever the ring: 0 and 1 the first
+            layer's shape index and curvedness, 2 and 3 the second's, ...,
+            then the normals' cosines and the heights).
     """
 
-    def __init__(self, points, centers, descriptors, rings, bins, histogram_bins, histogram_weights):
+    def __init__(self, points, centers, descriptors, rings, bins, histogram_bins, histogram_weights,
+                 histogram_kinds):
         self.points = points
         self.centers = centers
         self.descriptors = descriptors
@@ -135,6 +139,7 @@ class Regions:
         self.bins = tuple(bins)
         self.histogram_bins = np.asarray(histogram_bins, dtype=np.int64)
         self.histogram_weights = np.asarray(histogram_weights, dtype=np.float64)
+        self.histogram_kinds = np.asarray(histogram_kinds, dtype=np.int64)
         self.histograms = len(self.histogram_bins)  # how many normalised histograms each row holds
 
     def __len__(self):
@@ -292,13 +297,14 @@ def region_descriptors(points, layers, centers=None, *, normals=None, center_nor
     histogram_bins = np.tile([shape_bins, curvedness_bins] * n_layers + [geometry_bins] * (2 if geometry else 0),
                              n_rings).astype(np.int64)
     histogram_weights = np.repeat(ring_weights, len(histogram_bins) // n_rings)
+    histogram_kinds = np.tile(np.arange(len(histogram_bins) // n_rings), n_rings)
     ends = np.cumsum(histogram_bins)
     for first, end in zip(ends - histogram_bins, ends):
         part = descriptors[:, first:end]
         total = part.sum(axis=1, keepdims=True)
         np.divide(part, total, out=part, where=total > 0)
     return Regions(points, centers, descriptors, rings, (shape_bins, curvedness_bins), histogram_bins,
-                   histogram_weights)
+                   histogram_weights, histogram_kinds)
 
 
 def _cumulative(regions):
@@ -313,21 +319,44 @@ def _cumulative(regions):
     return out
 
 
-def histogram_distances(a, b, threads=None):
-    """(len(a), len(b)) distances between the regions of ``Regions`` a and b: the weighted mean,
-    over their histograms, of the earth mover's distance between the two histograms as a share of
-    the histogram's range (the L1 distance of the running sums over the bins' count), in [0, 1].
+def histogram_distances(a, b, threads=None, balance=True):
+    """(len(a), len(b)) distances between the regions of ``Regions`` a and b, from the earth mover's
+    distance between each pair of histograms as a share of the histogram's range (the L1 distance
+    of the running sums over the bins' count), weighted by ring.
 
     The bins are ordered (a shape index of 0.9 is near 1.0, far from -1.0); the chi-square
     distance compares bins one by one, so a shape shifted by one bin looks as far as one at the
-    other end, and the earth mover's distance ranks the true places higher. ``threads``: how many
-    threads share the rows (default: the CPUs)."""
+    other end, and the earth mover's distance ranks the true places higher.
+
+    balance: True (default): the weighted sum over each kind of histogram (one layer's shape
+    index, one layer's curvedness, the normals' cosines, the heights: all rings) is divided by its
+    median over all the pairs of regions, then the kinds averaged, so that every kind weighs alike
+    however spread its values (the curvedness at large radii varies little, and would otherwise
+    count for little); a distance of 1 is then a typical one. False: the weighted mean over all
+    the histograms, in [0, 1].
+    threads: how many threads share the rows (default: the CPUs)."""
     if (a.descriptors.shape[1] != b.descriptors.shape[1] or a.rings != b.rings or a.bins != b.bins
             or not np.array_equal(a.histogram_bins, b.histogram_bins)
-            or not np.array_equal(a.histogram_weights, b.histogram_weights)):
+            or not np.array_equal(a.histogram_weights, b.histogram_weights)
+            or not np.array_equal(a.histogram_kinds, b.histogram_kinds)):
         raise ValueError("histogram_distances: the regions were described with different layouts")
     # float32 halves the memory traffic; the sums keep about 6 digits, far below the distances' spread
     x, y = _cumulative(a).astype(np.float32), _cumulative(b).astype(np.float32)
+    if not balance:
+        return _l1(x, y, threads)
+    column_kind = np.repeat(a.histogram_kinds, a.histogram_bins)
+    kinds = np.unique(a.histogram_kinds)
+    out = np.zeros((len(x), len(y)))
+    for kind in kinds:
+        columns = np.nonzero(column_kind == kind)[0]
+        d = _l1(np.ascontiguousarray(x[:, columns]), np.ascontiguousarray(y[:, columns]), threads)
+        median = float(np.median(d))
+        out += d / median if median > 0 else d
+    return out / len(kinds)
+
+
+def _l1(x, y, threads):
+    """(len(x), len(y)) L1 distances between rows."""
     out = np.empty((len(x), len(y)))
     chunk = max(1, 2_000_000 // max(1, len(y) * x.shape[1]))
 
@@ -468,7 +497,7 @@ class Matches:
         return f"<Matches: {len(self.centers)} regions, {self.consistent:.0%} consistent with the registration>"
 
 
-def match_regions(a, b, *, top=10, pool=50, tolerance=3.0, iterations=2000, seed=0, threads=None):
+def match_regions(a, b, *, top=10, pool=50, tolerance=3.0, iterations=2000, seed=0, threads=None, balance=True):
     """The best candidates among B's regions for each of A's, and the registration of B onto A.
 
     Parameters:
@@ -479,7 +508,7 @@ def match_regions(a, b, *, top=10, pool=50, tolerance=3.0, iterations=2000, seed
             registration chooses from (at least ``top``).
         tolerance: the registration's inlier distance (model units).
         iterations, seed: of the RANSAC.
-        threads: of ``histogram_distances``.
+        threads, balance: of ``histogram_distances``.
 
     Returns:
         ``Matches``.
@@ -487,7 +516,7 @@ def match_regions(a, b, *, top=10, pool=50, tolerance=3.0, iterations=2000, seed
     if len(b) == 0 or len(a) == 0:
         raise ValueError("match_regions: no region")
     try:
-        distances = histogram_distances(a, b, threads)
+        distances = histogram_distances(a, b, threads, balance)
     except ValueError:
         raise ValueError("match_regions: the regions were described with different layouts") from None
     top = min(top, len(b))
