@@ -210,9 +210,9 @@ def region_descriptors(points, layers, centers=None, *, normals=None, center_nor
         dense_radius, thinning: beyond ``dense_radius`` from the centre, only
             one point in ``thinning`` (by index) counts: the rings there hold
             hundreds to thousands of points, whose normalised histograms a
-            third of them gives nearly as well (hit rates within 0.01 on
-            the benchmark's chain pairs, 0.025 on a buried one) in half the
-            time. ``thinning=1``: every point everywhere.
+            third of them gives nearly as well (hit rates within 0.02 on
+            the benchmark's pairs) in half the time. ``thinning=1``: every
+            point everywhere.
         threads: how many threads share the centres (default: the CPUs).
 
     Returns:
