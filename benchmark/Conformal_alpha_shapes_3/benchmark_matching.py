@@ -33,7 +33,7 @@ surfaces (conformal_curvature, run again right after, for the time only).
 Usage:
   benchmark_matching.py --build BUILD_DIR [--work DIR] [--pairs hpv,tii,hpv-buried,tii-buried] [--no-fpfh]
 BUILD_DIR holds examples/Conformal_alpha_shapes_3/{molecular_surface_points,conformal_curvature}
-and python/ (the module). Needs pymol-data and scipy; FPFH needs python3-open3d.
+and python/ (the module). Needs pymol-data; FPFH needs python3-open3d.
 """
 
 import argparse
@@ -123,6 +123,16 @@ def curvature(build, xyz, output):
     return time.time() - start
 
 
+def nearest_atoms(points, centres, k):
+    """The indices of the k atom centres nearest to each point (numpy, by blocks of points)."""
+    index = np.empty((len(points), k), dtype=np.int64)
+    for start in range(0, len(points), 2048):
+        block = points[start:start + 2048]
+        squared = ((block[:, None, :] - centres[None, :, :]) ** 2).sum(axis=2)
+        index[start:start + len(block)] = np.argpartition(squared, k - 1, axis=1)[:, :k]
+    return index
+
+
 def surface(build, work, pdb, chain, complex_chains=None):
     """Points, normals and curvature values (the PLY's vertex array) of one chain's surface: sampled
     alone, or sampled in a complex, then only the points nearest to the chain's atoms kept (and their
@@ -135,10 +145,9 @@ def surface(build, work, pdb, chain, complex_chains=None):
                             chains, "--normals", "--spacing", "0.4", "--quiet"], check=True)
     base = stem + (f"{chain}_in_{complex_chains}" if complex_chains else chain)
     if complex_chains and not os.path.exists(base + ".xyz"):
-        from scipy.spatial import cKDTree
         xyz = np.loadtxt(stem + complex_chains + ".xyz")
         centres, radii, owner = atoms(pdb, complex_chains)
-        _, index = cKDTree(centres).query(xyz[:, :3], k=8)
+        index = nearest_atoms(xyz[:, :3], centres, 8)
         gap = np.linalg.norm(xyz[:, None, :3] - centres[index], axis=2) - radii[index]  # to each atom's sphere
         mine = owner[index[np.arange(len(xyz)), np.argmin(gap, axis=1)]] == chain
         np.savetxt(base + ".xyz", xyz[mine], fmt="%.6f")
