@@ -11,16 +11,27 @@ within 3 A of the centre's true place, found by superposing the CA atoms of
 the two chains (which the matcher never sees). Both methods see the same
 centres, candidates and rings (0-2, 2-4, ... 12-14 A):
   - curvature: region_descriptors (shape index and curvedness histograms
-    per ring and radius), chi-square distances;
+    per ring and radius, and histograms of the normals' cosines and the
+    heights over the centre's tangent plane, the r3 layer's normal),
+    histogram_distances (earth mover's, rings weighted by their radius);
+    top-1 / top-10 as ranked by the descriptors, then after match_regions'
+    re-ranking of each centre's 50 best by the registration from the matches;
   - FPFH as usually used (one radius, 10 A), and FPFH in the same rings
     (FPFH at radius 3 A averaged over each ring's points, per ring),
-    chi-square distances too.
-Also: the registration of the second chain onto the first from the matches
-(CA RMSD), and a rotated, translated copy of the first chain matched
-against itself (invariance).
+    chi-square distances.
+The buried pairs (hpv-buried, tii-buried) match a chain seen inside its
+complex against the same chain alone: the complex of the two chains is
+sampled, then only the points nearest (surface distance) to the first
+chain's atoms are kept, so its interface is missing and the surface next
+to it is the complex's; both methods' features (curvature, FPFH) are
+computed on those points, as they are on the chain alone's. Also: the registration of the second chain onto
+the first from the matches (CA RMSD), a rotated, translated copy of the
+first chain matched against itself (invariance), and the times (wall):
+the descriptors and matching of the pair, and the curvature of the two
+surfaces (conformal_curvature, run again right after, for the time only).
 
 Usage:
-  benchmark_matching.py --build BUILD_DIR [--work DIR] [--pairs hpv,tii] [--no-fpfh]
+  benchmark_matching.py --build BUILD_DIR [--work DIR] [--pairs hpv,tii,hpv-buried,tii-buried] [--no-fpfh]
 BUILD_DIR holds examples/Conformal_alpha_shapes_3/{molecular_surface_points,conformal_curvature}
 and python/ (the module). Needs pymol-data; FPFH needs python3-open3d.
 """
@@ -33,10 +44,17 @@ import time
 
 import numpy as np
 
+HPV, TII = "/usr/share/pymol/data/tut/1hpv.pdb", "/usr/share/pymol/data/demo/1tii.pdb"
+# pdb, first chain, second chain, the complex the first chain is sampled in (None: alone)
 PAIRS = {
-    "hpv": ("/usr/share/pymol/data/tut/1hpv.pdb", "A", "B"),
-    "tii": ("/usr/share/pymol/data/demo/1tii.pdb", "D", "E"),
+    "hpv": (HPV, "A", "B", None),
+    "tii": (TII, "D", "E", None),
+    "hpv-buried": (HPV, "A", "A", "AB"),
+    "tii-buried": (TII, "D", "D", "DE"),
 }
+BONDI = {"H": 1.2, "C": 1.7, "N": 1.55, "O": 1.52, "S": 1.8, "P": 1.8, "F": 1.47, "CL": 1.75, "BR": 1.85,
+         "I": 1.98, "SE": 1.9}
+WATERS = ("HOH", "WAT", "H2O", "DOD", "SOL")
 RADII = (1.5, 3.0, 6.0, 9.0, 12.0)
 RINGS = (2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 14.0)
 CENTRES, CANDIDATES, HIT = 300, 2000, 3.0
@@ -61,12 +79,14 @@ def read_ply(path):
 
 
 def layers_from_ply(values):
+    """The curvature layers of the benchmark's radii, and the r3 layer's normals."""
     layers = []
     for r in RADII:
         suffix = ("r%g" % r).replace(".", "p")
         layers.append({"k1": values["k1_" + suffix].astype(np.float64), "k2": values["k2_" + suffix].astype(np.float64),
                        "radius": values["radius_" + suffix].astype(np.float64)})
-    return layers
+    normals = np.column_stack([values["nx_r3"], values["ny_r3"], values["nz_r3"]]).astype(np.float64)
+    return layers, normals
 
 
 def ca_atoms(pdb, chain):
@@ -77,19 +97,65 @@ def ca_atoms(pdb, chain):
     return atoms
 
 
-def surface(build, work, pdb, chain):
-    """Points, normals and curvature layers of one chain's surface (cached in work)."""
-    base = os.path.join(work, f"{os.path.basename(pdb)[:-4]}_{chain}")
+def atoms(pdb, chains):
+    """Centres, radii and chains of the atoms molecular_surface_points keeps by default (no hydrogens,
+    no waters, first alternate location), of the given chains."""
+    xyz, radius, chain = [], [], []
+    for line in open(pdb):
+        if line.startswith("ENDMDL"):
+            break
+        if not line.startswith(("ATOM", "HETATM")) or line[21] not in chains or line[16] not in " A":
+            continue
+        element = (line[76:78].strip() or line[12:14].strip()).upper()
+        if element in ("H", "D") or line[17:20].strip() in WATERS:
+            continue
+        xyz.append([float(line[30:38]), float(line[38:46]), float(line[46:54])])
+        radius.append(BONDI.get(element, 2.0))
+        chain.append(line[21])
+    return np.array(xyz), np.array(radius), np.array(chain)
+
+
+def curvature(build, xyz, output):
+    """Runs conformal_curvature at the benchmark's radii; its wall time in seconds."""
+    start = time.time()
+    subprocess.run([os.path.join(build, "examples", "Conformal_alpha_shapes_3", "conformal_curvature"), xyz,
+                    "--radius", ",".join("%g" % r for r in RADII), "--output", output, "--quiet"], check=True)
+    return time.time() - start
+
+
+def nearest_atoms(points, centres, k):
+    """The indices of the k atom centres nearest to each point (numpy, by blocks of points)."""
+    index = np.empty((len(points), k), dtype=np.int64)
+    for start in range(0, len(points), 2048):
+        block = points[start:start + 2048]
+        squared = ((block[:, None, :] - centres[None, :, :]) ** 2).sum(axis=2)
+        index[start:start + len(block)] = np.argpartition(squared, k - 1, axis=1)[:, :k]
+    return index
+
+
+def surface(build, work, pdb, chain, complex_chains=None):
+    """Points, normals and curvature values (the PLY's vertex array) of one chain's surface: sampled
+    alone, or sampled in a complex, then only the points nearest to the chain's atoms kept (and their
+    curvature computed on those points alone). Cached in work."""
     tools = os.path.join(build, "examples", "Conformal_alpha_shapes_3")
-    if not os.path.exists(base + ".xyz"):
-        subprocess.run([os.path.join(tools, "molecular_surface_points"), pdb, base + ".xyz", "--chains", chain,
-                        "--normals", "--spacing", "0.4", "--quiet"], check=True)
+    stem = os.path.join(work, os.path.basename(pdb)[:-4] + "_")
+    for chains in filter(None, (chain, complex_chains)):
+        if not os.path.exists(stem + chains + ".xyz"):
+            subprocess.run([os.path.join(tools, "molecular_surface_points"), pdb, stem + chains + ".xyz", "--chains",
+                            chains, "--normals", "--spacing", "0.4", "--quiet"], check=True)
+    base = stem + (f"{chain}_in_{complex_chains}" if complex_chains else chain)
+    if complex_chains and not os.path.exists(base + ".xyz"):
+        xyz = np.loadtxt(stem + complex_chains + ".xyz")
+        centres, radii, owner = atoms(pdb, complex_chains)
+        index = nearest_atoms(xyz[:, :3], centres, 8)
+        gap = np.linalg.norm(xyz[:, None, :3] - centres[index], axis=2) - radii[index]  # to each atom's sphere
+        mine = owner[index[np.arange(len(xyz)), np.argmin(gap, axis=1)]] == chain
+        np.savetxt(base + ".xyz", xyz[mine], fmt="%.6f")
     ply = os.path.join(base + "_curvature", "curvatures.ply")
     if not os.path.exists(ply):
-        subprocess.run([os.path.join(tools, "conformal_curvature"), base + ".xyz", "--radius",
-                        ",".join("%g" % r for r in RADII), "--output", base + "_curvature", "--quiet"], check=True)
+        curvature(build, base + ".xyz", base + "_curvature")
     xyz = np.loadtxt(base + ".xyz")
-    return xyz[:, :3], xyz[:, 3:6], layers_from_ply(read_ply(ply))
+    return xyz[:, :3], xyz[:, 3:6], read_ply(ply), base + ".xyz"
 
 
 def fpfh(points, normals, radius):
@@ -126,7 +192,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--build", required=True)
     parser.add_argument("--work", default="benchmark_matching_work")
-    parser.add_argument("--pairs", default="hpv,tii")
+    parser.add_argument("--pairs", default="hpv,tii,hpv-buried,tii-buried")
     parser.add_argument("--no-fpfh", action="store_true")
     args = parser.parse_args()
     # the module's matching part is numpy only: loaded from the source tree, without the native module
@@ -138,11 +204,13 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     print("pair                 method               top-1  top-10  seconds")
     for key in args.pairs.split(","):
-        pdb, chain_a, chain_b = PAIRS[key]
+        pdb, chain_a, chain_b, complex_chains = PAIRS[key]
         if not os.path.exists(pdb):
             sys.exit(f"{pdb} is missing: install pymol-data (apt-get install pymol-data)")
-        pa, na, la = surface(args.build, args.work, pdb, chain_a)
-        pb, nb, lb = surface(args.build, args.work, pdb, chain_b)
+        pa, na, va, xyz_a = surface(args.build, args.work, pdb, chain_a, complex_chains)
+        pb, nb, vb, xyz_b = surface(args.build, args.work, pdb, chain_b)
+        la, ca_normals = layers_from_ply(va)
+        lb, cb_normals = layers_from_ply(vb)
         ca_a, ca_b = ca_atoms(pdb, chain_a), ca_atoms(pdb, chain_b)
         common = sorted(set(ca_a) & set(ca_b))
         ca_a = np.array([ca_a[k] for k in common])
@@ -151,20 +219,26 @@ def main():
         centres = m.farthest_point_sample(pa, CENTRES)
         candidates = m.farthest_point_sample(pb, CANDIDATES)
         true_places = pa[centres] @ r_true.T + t_true
-        name = f"{os.path.basename(pdb)[:4].upper()} {chain_a}/{chain_b}"
+        name = os.path.basename(pdb)[:4].upper() + " " + (
+            f"{chain_a} in {complex_chains}/{chain_b}" if complex_chains else f"{chain_a}/{chain_b}")
 
         start = time.time()
-        ra = m.region_descriptors(pa, la, centres, rings=RINGS)
-        rb = m.region_descriptors(pb, lb, candidates, rings=RINGS)
+        ra = m.region_descriptors(pa, la, centres, normals=na, center_normals=ca_normals, rings=RINGS)
+        rb = m.region_descriptors(pb, lb, candidates, normals=nb, center_normals=cb_normals, rings=RINGS)
         matches = m.match_regions(ra, rb, top=10)
         seconds = time.time() - start
-        d = m.chi_square_distances(ra.descriptors, rb.descriptors)
-        top1, top10 = rates(d, true_places, pb[candidates])
-        print(f"{name:20} {'curvature rings':20} {top1:5.3f}  {top10:5.3f}  {seconds:7.1f}")
+        for method, ranked in (("curvature rings", matches.candidates), ("  re-ranked", matches.reranked)):
+            miss = np.linalg.norm(pb[ranked] - true_places[:, None, :], axis=2)
+            top1, top10 = float(np.mean(miss[:, 0] <= HIT)), float(np.mean(np.any(miss <= HIT, axis=1)))
+            print(f"{name:20} {method:20} {top1:5.3f}  {top10:5.3f}  {seconds if ranked is matches.candidates else 0:7.1f}")
         placed = matches.transform(ca_b)
         rmsd = float(np.sqrt(np.mean(np.sum((placed - ca_a) ** 2, axis=1))))
         print(f"{name:20} registration B onto A: CA RMSD {rmsd:.2f} A, {matches.consistent:.0%} of the matches"
               " consistent")
+        # the curvature timed again now, the machine as loaded as for the matching just before
+        seconds_curvature = sum(curvature(args.build, xyz, os.path.join(args.work, "timing")) for xyz in (xyz_a, xyz_b))
+        print(f"{name:20} time: curvature of the two surfaces ({len(pa)} + {len(pb)} points) "
+              f"{seconds_curvature:.1f} s, descriptors and matching ({len(pa)} + {len(pb)} points) {seconds:.1f} s")
 
         if not args.no_fpfh:
             start = time.time()
@@ -187,13 +261,12 @@ def main():
             rot = rot @ np.array([[1, 0, 0], [0, np.cos(0.7), -np.sin(0.7)], [0, np.sin(0.7), np.cos(0.7)]])
             moved = pa @ rot.T + np.array([25.0, -40.0, 13.0])
             base = os.path.join(args.work, "moved")
-            np.savetxt(base + ".xyz", moved, fmt="%.5f")
-            subprocess.run([os.path.join(args.build, "examples", "Conformal_alpha_shapes_3", "conformal_curvature"),
-                            base + ".xyz", "--radius", ",".join("%g" % r for r in RADII), "--output",
-                            base + "_curvature", "--quiet"], check=True)
-            lc = layers_from_ply(read_ply(os.path.join(base + "_curvature", "curvatures.ply")))
-            rc = m.region_descriptors(moved, lc, m.farthest_point_sample(moved, CANDIDATES, first=17), rings=RINGS)
-            d = m.chi_square_distances(ra.descriptors, rc.descriptors)
+            np.savetxt(base + ".xyz", np.hstack([moved, na @ rot.T]), fmt="%.5f")
+            curvature(args.build, base + ".xyz", base + "_curvature")
+            lc, cc_normals = layers_from_ply(read_ply(os.path.join(base + "_curvature", "curvatures.ply")))
+            rc = m.region_descriptors(moved, lc, m.farthest_point_sample(moved, CANDIDATES, first=17),
+                                      normals=na @ rot.T, center_normals=cc_normals, rings=RINGS)
+            d = m.histogram_distances(ra, rc)
             top1, top10 = rates(d, moved[centres], moved[rc.centers])
             print(f"{name:20} {'rotated copy of A':20} {top1:5.3f}  {top10:5.3f}")
 

@@ -44,8 +44,8 @@ import warnings
 import numpy as np
 
 from . import _native, curvature_file
-from .matching import (Matches, Regions, curvedness, farthest_point_sample, match_regions, region_descriptors,
-                       shape_index)
+from .matching import (Matches, Regions, curvedness, farthest_point_sample, histogram_distances, match_regions,
+                       region_descriptors, shape_index)
 from .output_files import atomic_write
 
 __version__ = _native.__version__
@@ -57,6 +57,7 @@ __all__ = [
     "Regions",
     "curvedness",
     "farthest_point_sample",
+    "histogram_distances",
     "match_regions",
     "region_descriptors",
     "shape_index",

@@ -51,12 +51,39 @@ def test_bad_arguments():
     b = cas.region_descriptors(points, layer, 5, rings=(2.0, 4.0))
     with pytest.raises(ValueError, match="different layouts"):
         cas.match_regions(a, b)
+    with pytest.raises(ValueError, match="thinning"):
+        cas.region_descriptors(points, layer, 5, thinning=0)
+    # every point counted or one in three beyond dense_radius: the same layout, so comparable
+    assert cas.region_descriptors(points, layer, 5, thinning=1).descriptors.shape == a.descriptors.shape
+    with pytest.raises(ValueError, match="ring_weights"):
+        cas.region_descriptors(points, layer, 5, ring_weights=(1.0, 2.0))
+    with pytest.raises(ValueError, match="different layouts"):
+        cas.match_regions(a, cas.region_descriptors(points, layer, 5, ring_weights="equal"))
+
+
+def test_histogram_distances_follow_the_bins_order():
+    # one layer, one ring: a region whose points all have one shape index; the earth mover's distance
+    # grows with the gap between the shape indices, as a share of [-1, 1] (chi-square would not)
+    points = np.random.default_rng(5).random((40, 3))
+    values = np.repeat([1.0, 0.8, 0.0, -1.0], 10)  # shape index 1, 0.8, 0, -1 from k1 = 1, k2 = ...
+    k2 = np.tan(values * np.pi / 2 - np.pi / 4) * 1.0
+    k2 = np.where(values == 1.0, 1.0, np.where(values == -1.0, -1.0, k2))
+    k1 = np.where(values == -1.0, -1.0, 1.0)
+    layer = {"k1": k1, "k2": k2, "radius": np.ones(40)}
+    assert np.allclose(cas.shape_index(k1, k2), values)
+    regions = cas.region_descriptors(points, layer, np.array([0]), rings=(10.0,))
+    each = [cas.region_descriptors(points[i:i + 10], {k: v[i:i + 10] for k, v in layer.items()}, np.array([0]),
+                                   rings=(10.0,)) for i in range(0, 40, 10)]
+    d = [cas.histogram_distances(each[0], other, balance=False)[0, 0] for other in each]
+    assert d[0] == 0 and d[1] < d[2] < d[3] <= 1
+    assert regions.histograms == 2 and list(regions.histogram_bins) == [10, 6]
 
 
 def test_crambin_matches_a_moved_copy():
     """The crambin surface (8,186 points) against a rotated, translated copy, each with its own
     curvature; 100 farthest-point centres against 800 candidates of the copy sampled from
-    another start. Measured: top-1 1.00, top-10 1.00, all matches consistent, motion to 1e-3 A."""
+    another start. Measured: top-1 1.00, top-10 1.00 (1.00 and 1.00 re-ranked by the registration),
+    all the matches consistent, motion to 0.19 A (the candidates are about 1 A apart)."""
     path = os.path.join(os.environ.get("CAS3_SOURCE_DIR", "."),
                         "examples/Conformal_alpha_shapes_3/data/1crn_surface.xyz")
     data = np.loadtxt(path)
@@ -73,9 +100,11 @@ def test_crambin_matches_a_moved_copy():
     matches = cas.match_regions(a, b, top=10)
     truth = moved[a.centers]
     found = np.linalg.norm(moved[matches.candidates] - truth[:, None, :], axis=2) <= 3.0
+    reranked = np.linalg.norm(moved[matches.reranked] - truth[:, None, :], axis=2) <= 3.0
+    assert np.mean(reranked[:, 0]) >= 0.99
     assert np.mean(found[:, 0]) >= 0.95
     assert np.mean(np.any(found, axis=1)) >= 0.99
     assert matches.consistent >= 0.9
     # B placed onto A: the inverse of the motion
-    assert np.max(np.abs(matches.transform(moved) - points)) < 0.2
+    assert np.max(np.abs(matches.transform(moved) - points)) < 0.3
     assert (matches.scores[:, 1:] >= matches.scores[:, :-1]).all()
