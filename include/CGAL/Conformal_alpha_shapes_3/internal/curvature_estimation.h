@@ -200,15 +200,9 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
   return rates;
 }
 
-// The uncertainty of the noise and of the bias added in quadrature are
-// multiplied by these, measured on analytic surfaces under noise (the
-// manual, "Uncertainty"): the standard errors of the fit assume independent
-// noise, while the smoothed points' noise is correlated over the jets.
-constexpr double uncertainty_noise_factor = 1;
-constexpr double uncertainty_bias_factor = 1;
-
-// The uncertainty of a fit at radius `radius` whose bias grows at `rates`;
-// the sample's noise counts at radii below `smoothed_reach` (0: none) as
+// The uncertainty of a fit at radius `radius` whose bias grows at `rates`,
+// the noise's and the bias's added in quadrature; the sample's noise counts
+// at radii below `smoothed_reach` (0: none) as
 // smoothed_noise_reach_in_spacings says.
 inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, const Bias_rates& rates,
                                             double sample_noise, double smoothed_reach = 0)
@@ -217,11 +211,11 @@ inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double r
   if(!(e.per_noise > 0))
     return u;
   const double below = smoothed_reach > 0 ? (std::min)(1., (radius / smoothed_reach) * (radius / smoothed_reach)) : 1.;
-  const double noise = uncertainty_noise_factor * fit_noise(e, below * sample_noise);
-  const double r4 = radius * radius * radius * radius, b2 = uncertainty_bias_factor * uncertainty_bias_factor;
+  const double noise = fit_noise(e, below * sample_noise);
+  const double r4 = radius * radius * radius * radius;
   const double se_H = noise * e.per_noise, se_K = noise * e.per_noise_K;
-  u.H = std::sqrt(se_H * se_H + b2 * rates.squared_H * r4);
-  u.K = std::sqrt(se_K * se_K + b2 * rates.squared_K * r4);
+  u.H = std::sqrt(se_H * se_H + rates.squared_H * r4);
+  u.K = std::sqrt(se_K * se_K + rates.squared_K * r4);
   u.normal = noise * e.per_noise_normal;
   return u;
 }
