@@ -10,8 +10,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include "cas3_test_meshes.h"
-#include "cas3_test_shapes.h"
+#include "cas3_point_values.h"
 #include "cas3_test_types.h"
 
 #include <cmath>
@@ -55,17 +54,14 @@ BOOST_AUTO_TEST_CASE(far_from_surface_is_four_local_spacings)
   static_assert(CAS3::far_from_surface() == 4, "a constant expression, as documented");
 }
 
-// The unit sphere without its cap above z = 0.8: the cap's points are off
-// the surface, those near its rim take values, those near its center none.
+// The unit sphere without its cap: the cap's points are off the surface,
+// those near its rim take values, those near its center none.
 BOOST_AUTO_TEST_CASE(points_farther_than_far_from_surface_have_no_value)
 {
-  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(4000, 1, 1, 1);
-  const Analysis analysis(pts.begin(), pts.end());
-  Analysis::Surface surface;
-  analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
-  cas3_test::remove_cap_above(surface, 0.8);
-  const std::vector<CAS3::Point_curvature<K> > c =
-    analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
+  const cas3_test::Pipeline_without_cap sphere;
+  const std::vector<Point>& pts = sphere.pts;
+  const Analysis& analysis = sphere.analysis;
+  const std::vector<CAS3::Point_curvature<K> >& c = sphere.values;
   BOOST_REQUIRE(c.size() == pts.size());
 
   typedef CAS3::internal::Local_feature_size_policy Policy;
