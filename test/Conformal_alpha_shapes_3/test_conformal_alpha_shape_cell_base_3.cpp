@@ -6,6 +6,7 @@
 
 #include <CGAL/Conformal_alpha_shape_cell_base_3.h>
 
+#include "cas3_rebound_base.h"
 #include "cas3_test_shapes.h"
 #include "cas3_test_types.h"
 
@@ -13,7 +14,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <type_traits>
 #include <vector>
 
 // Every name of this file is in its own namespace: the test runner compiles
@@ -23,17 +23,9 @@ namespace test_conformal_alpha_shape_cell_base_3 {
 using namespace cas3_test_types;
 typedef Tds::Cell Cell;
 
-// whether a type derives from the cell base, whatever the base below it
-template <class Cb>
-std::true_type is_conformal_cell(const CGAL::Conformal_alpha_shape_cell_base_3<K, Cb>*);
-std::false_type is_conformal_cell(...);
-
-static_assert(decltype(is_conformal_cell(static_cast<Cell*>(nullptr)))::value
-                && std::is_base_of<CGAL::Triangulation_ds_cell_base_3<Tds>, Cell>::value,
+static_assert(cas3_test::is_rebound<CGAL::Conformal_alpha_shape_cell_base_3, K, Cell,
+                                    CGAL::Triangulation_ds_cell_base_3<Tds> >(),
               "the triangulation's cell is the cell base rebound to it");
-static_assert(std::is_same<Cell::Cell_handle, Tds::Cell_handle>::value
-                && std::is_same<Cell::Vertex_handle, Tds::Vertex_handle>::value,
-              "the rebound cell's handles are the triangulation's");
 
 BOOST_AUTO_TEST_SUITE(conformal_alpha_shape_cell_base_3)
 

@@ -6,11 +6,11 @@
 
 #include <CGAL/Conformal_alpha_shape_vertex_base_3.h>
 
+#include "cas3_rebound_base.h"
 #include "cas3_test_shapes.h"
 #include "cas3_test_types.h"
 
 #include <cstddef>
-#include <type_traits>
 #include <vector>
 
 // Every name of this file is in its own namespace: the test runner compiles
@@ -20,16 +20,9 @@ namespace test_conformal_alpha_shape_vertex_base_3 {
 using namespace cas3_test_types;
 typedef Tds::Vertex Vertex;
 
-// whether a type derives from the vertex base, whatever the base below it
-template <class Vb>
-std::true_type is_conformal_vertex(const CGAL::Conformal_alpha_shape_vertex_base_3<K, Vb>*);
-std::false_type is_conformal_vertex(...);
-
-static_assert(decltype(is_conformal_vertex(static_cast<Vertex*>(nullptr)))::value
-                && std::is_base_of<CGAL::Triangulation_ds_vertex_base_3<Tds>, Vertex>::value,
+static_assert(cas3_test::is_rebound<CGAL::Conformal_alpha_shape_vertex_base_3, K, Vertex,
+                                    CGAL::Triangulation_ds_vertex_base_3<Tds> >(),
               "the triangulation's vertex is the vertex base rebound to it");
-static_assert(std::is_same<Vertex::Cell_handle, Tds::Cell_handle>::value,
-              "the rebound vertex's cell handle is the triangulation's");
 
 BOOST_AUTO_TEST_SUITE(conformal_alpha_shape_vertex_base_3)
 
