@@ -1,5 +1,5 @@
 // Accuracy and speed of estimate_vertex_curvatures.
-//   benchmark_curvature [--vertices N]
+//   benchmark_curvature [--vertices N] [--csv FILE]
 // Accuracy: median and 90th percentile relative error of H and K per surface,
 // ring size and estimator, on clean meshes and with Gaussian noise of 0.1 mean
 // edge length along the normal, beside CGAL's Monge_via_jet_fitting (degree
@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <random>
 #include <string>
@@ -104,17 +105,25 @@ Errors jet(const Surface& s, int rings, int degree)
   return errors(s, H, Kv);
 }
 
-void print(const char* surface, const char* method, int rings, const Errors& e)
+// One row of the accuracy table, printed and written to `csv`.
+void print(std::ofstream& csv, const char* surface, const char* method, int rings, const Errors& e)
 {
   std::printf("| %-16s | %-22s | %d | %6.2f%% | %7.2f%% | %7.2f%% | %8.2f%% |\n", surface, method, rings,
               100 * e.h50, 100 * e.h90, 100 * e.k50, 100 * e.k90);
+  csv << "accuracy," << cas3_benchmark::csv_field(surface) << ',' << cas3_benchmark::csv_field(method) << ','
+      << rings << ",," << e.h50 << ',' << e.h90 << ',' << e.k50 << ',' << e.k90 << ",,\n";
 }
 
 int main(int argc, char* argv[])
 {
   std::size_t n = 20000;
+  std::string csv_path;
   for(int i = 1; i + 1 < argc; ++i)
     if(std::string(argv[i]) == "--vertices") n = std::stoul(argv[++i]);
+    else if(std::string(argv[i]) == "--csv") csv_path = argv[++i];
+  std::ofstream csv = cas3_benchmark::open_csv(csv_path, argc, argv,
+                                               "measure,surface,method,rings,vertices,H_median,H_p90,K_median,"
+                                               "K_p90,seconds,x_delaunay");
 
   const char* names[] = {"paper Euler fit", "Euler least squares", "quadric fit"};
   std::printf("| surface | method | rings | H median | H 90th | K median | K 90th |\n|---|---|---|---|---|---|---|\n");
@@ -128,10 +137,10 @@ int main(int argc, char* argv[])
       if(noisy) { add_noise(s, 0.1); s.name += " +noise"; }
       for(int rings = 1; rings <= 7; ++rings)
         for(CAS3::Curvature_estimator e : {CAS3::PAPER_EULER_FIT, CAS3::EULER_LEAST_SQUARES_FIT, CAS3::QUADRIC_FIT})
-          print(s.name.c_str(), names[e], rings, ours(s, rings, e));
+          print(csv, s.name.c_str(), names[e], rings, ours(s, rings, e));
       for(int rings = 2; rings <= 7; ++rings)
         for(int degree : {2, 3})
-          print(s.name.c_str(), degree == 2 ? "jet fitting, degree 2" : "jet fitting, degree 3", rings,
+          print(csv, s.name.c_str(), degree == 2 ? "jet fitting, degree 2" : "jet fitting, degree 3", rings,
                 jet(s, rings, degree));
     }
   }
@@ -158,6 +167,8 @@ int main(int argc, char* argv[])
       const double s = phase.seconds();
       std::printf("%-20s rings %d: %.3f s, %.2f us per vertex, %.2fx the Delaunay build\n", names[e], rings, s,
                   1e6 * s / double(mesh.number_of_vertices()), s / dt_seconds);
+      csv << "speed,irregular sphere," << names[e] << ',' << rings << ',' << mesh.number_of_vertices() << ",,,,,"
+          << s << ',' << s / dt_seconds << '\n';
     }
   return 0;
 }

@@ -4,7 +4,7 @@
 // points as the unit of time.
 //
 //   benchmark_denoise [--sizes 100000,1000000] [--k 24,50] [--noise 0.1]
-//                     [--passes 1] [--runs LIST] [--no-compare]
+//                     [--passes 1] [--runs LIST] [--no-compare] [--csv FILE]
 //
 // Input: the ellipsoid 1 : 0.7 : 0.4 sampled uniformly in area
 // (cas3_analytic_surfaces.h, seed 11), Gaussian noise of --noise x the
@@ -35,12 +35,14 @@
 #include <CGAL/jet_smooth_point_set.h>
 
 #include "cas3_analytic_surfaces.h"
+#include "cas3_benchmark.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <sstream>
@@ -157,6 +159,7 @@ int main(int argc, char* argv[])
   double noise = 0.1;
   int passes = 1;
   bool compare = true;
+  std::string csv_path;
   std::vector<std::string> runs = {"delaunay", "cgal_seq", "cgal_par", "search", "fast_seq", "fast_par", "denoise", "fast_search"};
   for(int i = 1; i < argc; ++i)
   {
@@ -167,9 +170,11 @@ int main(int argc, char* argv[])
     else if(arg == "--passes" && i + 1 < argc) passes = std::stoi(argv[++i]);
     else if(arg == "--runs" && i + 1 < argc) runs = parse_list<std::string>(argv[++i]);
     else if(arg == "--no-compare") compare = false;
+    else if(arg == "--csv" && i + 1 < argc) csv_path = argv[++i];
     else
     {
-      std::cerr << "usage: benchmark_denoise [--sizes N,...] [--k K,...] [--noise R] [--passes P] [--runs LIST] [--no-compare]\n";
+      std::cerr << "usage: benchmark_denoise [--sizes N,...] [--k K,...] [--noise R] [--passes P] [--runs LIST] [--no-compare]\n"
+                   "                         [--csv FILE]\n";
       return 1;
     }
   }
@@ -182,6 +187,7 @@ int main(int argc, char* argv[])
   std::printf("noise %g spacings, %d pass(es), TBB %s; cpu = processor time (s, all threads), xDT = cpu / Delaunay cpu\n",
               noise, passes, tbb ? "on" : "off");
   std::printf("%-9s %-4s %-12s %9s %9s %7s\n", "n", "k", "run", "cpu", "wall", "xDT");
+  std::ofstream csv = cas3_benchmark::open_csv(csv_path, argc, argv, "n,k,run,cpu_s,wall_s,cpu_x_delaunay");
   for(std::size_t n : sizes)
   {
     auto sample = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(n, 1, 0.7, 0.4);
@@ -196,11 +202,14 @@ int main(int argc, char* argv[])
       });
       delaunay_cpu = t.cpu;
       std::printf("%-9zu %-4s %-12s %9.3f %9.3f %7s\n", n, "-", "delaunay", t.cpu, t.wall, "1");
+      csv << n << ",,delaunay," << t.cpu << ',' << t.wall << ",1\n";
     }
     auto report = [&](unsigned int k, const char* name, const Timing& t) {
       char ratio[32] = "-";
       if(delaunay_cpu > 0) std::snprintf(ratio, sizeof(ratio), "%.2f", t.cpu / delaunay_cpu);
       std::printf("%-9zu %-4u %-12s %9.3f %9.3f %7s\n", n, k, name, t.cpu, t.wall, ratio);
+      csv << n << ',' << k << ',' << name << ',' << t.cpu << ',' << t.wall << ',' << (delaunay_cpu > 0 ? ratio : "")
+          << '\n';
       std::fflush(stdout);
     };
     for(unsigned int k : ks)

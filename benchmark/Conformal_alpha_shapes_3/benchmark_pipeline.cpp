@@ -580,13 +580,7 @@ std::string load_average()
   return number(one, "%.2f");
 }
 
-std::string csv_field(const std::string& s)
-{
-  if(s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for(char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
+using cas3_benchmark::csv_field;
 
 void report(std::ofstream& csv, const std::string& input_name, std::size_t n,
             const std::string& load_before, const std::vector<Record>& records)
@@ -677,13 +671,10 @@ int main(int argc, char* argv[])
   const char* arenas = std::getenv("MALLOC_ARENA_MAX");
   std::printf("GLIBC_TUNABLES: %s; malloc arenas: %s\n", tunables ? tunables : "unset",
               arenas ? arenas : "1 (cas3::use_one_malloc_arena())");
-  std::ofstream csv;
-  if(!o.csv.empty())
-  {
-    csv.open(o.csv);
-    csv << "input,n,process,stage,group,wall_s,cpu_s,peak_added_mib,peak_process_mib,wall_us_per_point,"
-           "cpu_us_per_point,wall_x_delaunay,cpu_x_delaunay,peak_added_x_delaunay,load_before,load_after,note\n";
-  }
+  std::ofstream csv = cas3_benchmark::open_csv(
+    o.csv, argc, argv,
+    "input,n,process,stage,group,wall_s,cpu_s,peak_added_mib,peak_process_mib,wall_us_per_point,"
+    "cpu_us_per_point,wall_x_delaunay,cpu_x_delaunay,peak_added_x_delaunay,load_before,load_after,note");
   std::printf("wall and processor (cpu) time in s; xDT: ratio to the Delaunay build alone of the same points\n"
               "(wall to wall, cpu to cpu, peak to peak); peak+: the peak resident memory (VmHWM) of the stage\n"
               "less the child process's resident memory at its start; proc: VmHWM of the process\n");

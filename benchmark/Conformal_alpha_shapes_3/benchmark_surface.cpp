@@ -1,6 +1,6 @@
 // Time of suggest_scale and extract_surface with the solid boundary against the Delaunay
 // build of the same points, and the share of the points on the surface.
-//   benchmark_surface [--sizes 100000,1000000] [FILE...]
+//   benchmark_surface [--sizes 100000,1000000] [--csv FILE] [FILE...]
 // Without FILE: noisy ellipsoids (0.01% and 0.1% radial noise) of the given
 // sizes and the bundled bunny. FILE: any point file CGAL reads.
 #include <CGAL/Conformal_alpha_shape_3.h>
@@ -16,6 +16,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -28,7 +29,7 @@ typedef CGAL::Conformal_alpha_shape_3<CGAL::Delaunay_triangulation_3<K, Tds> > C
 typedef CGAL::Surface_mesh<Point> Mesh;
 namespace CAS3 = CGAL::Conformal_alpha_shapes_3;
 
-void run(const std::string& name, const std::vector<Point>& pts)
+void run(const std::string& name, const std::vector<Point>& pts, std::ofstream& csv)
 {
   double dt_seconds = 0;
   {
@@ -61,6 +62,9 @@ void run(const std::string& name, const std::vector<Point>& pts)
     std::printf("  %-10s %12.5g %10.3f %10.2f %9zu %8.2f%% %8zu\n", s.label.c_str(), s.alpha, seconds,
                 seconds / dt_seconds, r.number_of_faces, 100 * r.fraction_of_points_on_surface(),
                 r.number_of_pinched_vertices);
+    csv << cas3_benchmark::csv_field(name) << ',' << pts.size() << ',' << dt_seconds << ',' << build_seconds << ','
+        << search_seconds << ',' << s.label << ',' << s.alpha << ',' << seconds << ',' << r.number_of_faces << ','
+        << r.fraction_of_points_on_surface() << ',' << r.number_of_pinched_vertices << std::endl;
   }
   std::fflush(stdout);
 }
@@ -68,9 +72,15 @@ void run(const std::string& name, const std::vector<Point>& pts)
 int main(int argc, char* argv[])
 {
   const cas3_benchmark::Arguments args = cas3_benchmark::parse_arguments(argc, argv);
+  std::ofstream csv = cas3_benchmark::open_csv(args.csv, argc, argv,
+                                               "input,n,delaunay_s,conformal_s,suggest_scale_s,scale,alpha,"
+                                               "extract_s,faces,fraction_on_surface,pinched_vertices");
   for(std::size_t n : args.sizes)
     for(double noise : {1e-4, 1e-3})
       run("ellipsoid 1:0.7:0.4, " + std::to_string(noise * 100).substr(0, 4) + "% noise",
-          cas3_test::ellipsoid_sample<Point>(n, 1, 0.7, 0.4, noise));
-  return cas3_benchmark::for_each_point_file<Point>(args.files, run) ? EXIT_SUCCESS : EXIT_FAILURE;
+          cas3_test::ellipsoid_sample<Point>(n, 1, 0.7, 0.4, noise), csv);
+  return cas3_benchmark::for_each_point_file<Point>(
+           args.files, [&](const std::string& name, const std::vector<Point>& pts) { run(name, pts, csv); })
+           ? EXIT_SUCCESS
+           : EXIT_FAILURE;
 }

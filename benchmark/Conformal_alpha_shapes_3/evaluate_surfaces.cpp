@@ -882,6 +882,7 @@ int main(int argc, char* argv[])
       std::cerr << "evaluate_surfaces: cannot write " << o.csv << "\n";
       return EXIT_FAILURE;
     }
+    cas3_benchmark::write_csv_provenance(csv_file, argc, argv);
     csv_file << csv_header;
     csv = &csv_file;
   }

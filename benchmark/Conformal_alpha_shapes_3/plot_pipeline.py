@@ -24,7 +24,7 @@ STAGES = [  # (label, how to find its rows, color)
 
 def read(path):
     with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
 
 def series(rows, surface):

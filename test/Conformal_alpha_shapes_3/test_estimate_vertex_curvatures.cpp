@@ -1,8 +1,8 @@
 // Tests of estimate_vertex_curvatures() on analytic surfaces with known
 // curvature, at three scales, on Surface_mesh and Polyhedron_3, serial and
-// parallel. Curvature_estimator (curvature_estimator.h) and the named
-// parameters (named_parameters.h) are tested here. (Non-manifold, border
-// and isolated vertices: test_bad_input.cpp.)
+// parallel, with the named parameters of named_parameters.h. (What each
+// Curvature_estimator promises: test_curvature_estimator.cpp; non-manifold,
+// border and isolated vertices: test_bad_input.cpp.)
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shapes_3/estimate_vertex_curvatures.h>

@@ -5,7 +5,8 @@
 // suggest_scale()'s scale): one oriented sheet per part of the sampled
 // surface on clean, noisy and open samples, sheets oriented by the rule
 // without normals or following given normals, on analytic samples and real
-// scans. Surface_report (surface_report.h) is tested here.
+// scans, with the report's counts of each method's steps. (The report's
+// defaults and derived counts: test_surface_report.cpp.)
 #include <boost/test/unit_test.hpp>
 
 #include <CGAL/Conformal_alpha_shape_3.h>

@@ -41,14 +41,11 @@ BOOST_AUTO_TEST_SUITE(transfer_to_points)
 // have no value.
 BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
 {
-  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(4000, 1, 1, 1);
-  const Analysis analysis(pts.begin(), pts.end());
-  Analysis::Surface surface;
-  analysis.surface(analysis.scale_value(CAS3::Scale::automatic()), surface);
-  cas3_test::remove_cap_above(surface, 0.8);
-
-  const std::vector<CAS3::Point_curvature<K> > c =
-    analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
+  cas3_test::Pipeline_without_cap sphere;
+  const std::vector<Point>& pts = sphere.pts;
+  const Analysis& analysis = sphere.analysis;
+  Analysis::Surface& surface = sphere.surface;
+  const std::vector<CAS3::Point_curvature<K> >& c = sphere.values;
 #ifdef CGAL_LINKED_WITH_TBB
   {
     // on one thread, the same bits: the points on their own vertex are
