@@ -135,6 +135,23 @@ def test_shape_repr_len_points_and_pickle(tmp_path):
     assert np.array_equal(given.local_feature_sizes, np.full(len(POINTS), 0.05))
 
 
+def _spectrum_size(shape):
+    return len(shape.spectrum()), shape.suggest_scale()
+
+
+def test_a_dask_worker_process_receives_a_shape():
+    """The shape goes to another process by pickle, as Dask sends a task's arguments."""
+    from distributed import Client, LocalCluster
+    shape = cas.ConformalAlphaShape(POINTS)
+    try:
+        cluster = LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
+                               dashboard_address=None)
+    except Exception as e:  # a test whose service cannot start fails
+        pytest.fail(f"a Dask LocalCluster of 1 process did not start: {e!r}")
+    with cluster, Client(cluster) as client:
+        assert client.submit(_spectrum_size, shape).result(timeout=120) == _spectrum_size(shape)
+
+
 def test_the_shape_keeps_its_own_points():
     points = POINTS.copy()
     shape = cas.ConformalAlphaShape(points)
