@@ -48,6 +48,27 @@ struct Candidate_fit
   double radius;
 };
 
+// A straight line y = intercept + slope x fitted by weighted least squares,
+// its sums accumulated one point at a time.
+struct Weighted_line_fit
+{
+  double w0 = 0, w1 = 0, w2 = 0, y0 = 0, y1 = 0;  // sums of w, w x, w x^2, w y, w y x
+
+  void add(double x, double y, double w)
+  {
+    w0 += w;
+    w1 += w * x;
+    w2 += w * x * x;
+    y0 += w * y;
+    y1 += w * y * x;
+  }
+  double determinant() const { return w0 * w2 - w1 * w1; }
+  double intercept() const { return (y0 * w2 - y1 * w1) / determinant(); }
+  double slope() const { return (w0 * y1 - w1 * y0) / determinant(); }
+  // with weights the inverse variances of the y
+  double slope_variance() const { return w0 / determinant(); }
+};
+
 // The noise of the heights around the vertex from the fits' residual
 // variances at the smallest candidate radii, s^2(r) = sigma^2 + beta r^10
 // (the noise, and the terms that the fit misses), fitted by least squares
@@ -56,24 +77,18 @@ struct Candidate_fit
 inline double residual_noise(const std::vector<Candidate_fit>& fits)
 {
   const std::size_t measuring = (std::min)(fits.size(), noise_measuring_radii);
-  double s00 = 0, s01 = 0, s11 = 0, t0 = 0, t1 = 0;
+  Weighted_line_fit line;
   for(std::size_t i = 0; i < measuring; ++i)
   {
     const Quadric_fit_error& e = fits[i].error;
     if(!(e.degrees_of_freedom >= 1) || !std::isfinite(e.noise))
       continue;
     const double s2 = e.noise * e.noise;
-    const double x = std::pow(fits[i].radius / fits[0].radius, 10);
-    const double w = e.degrees_of_freedom / (s2 * s2 + (std::numeric_limits<double>::min)());
-    s00 += w;
-    s01 += w * x;
-    s11 += w * x * x;
-    t0 += w * s2;
-    t1 += w * s2 * x;
+    line.add(std::pow(fits[i].radius / fits[0].radius, 10), s2,
+             e.degrees_of_freedom / (s2 * s2 + (std::numeric_limits<double>::min)()));
   }
-  const double det = s00 * s11 - s01 * s01;
   const double widest = fits[measuring - 1].error.noise * fits[measuring - 1].error.noise;
-  double noise2 = det > 0 ? (t0 * s11 - t1 * s01) / det : widest;
+  double noise2 = line.determinant() > 0 ? line.intercept() : widest;
   noise2 = std::isfinite(widest) ? (std::min)((std::max)(noise2, 0.), widest) : (std::max)(noise2, 0.);
   return std::sqrt(noise2);
 }

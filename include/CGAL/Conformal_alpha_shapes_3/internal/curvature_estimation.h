@@ -176,25 +176,18 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
     r_max = (std::max)(r_max, q.radius);
   for(int which = 0; which < 2; ++which)
   {
-    double w0 = 0, w1 = 0, w2 = 0, h0 = 0, h1 = 0;
+    Weighted_line_fit line;
     for(const Radius_sample& q : samples)
     {
       const double se = which == 0 ? q.se_H : q.se_K, value = which == 0 ? q.H : q.K;
-      const double x = (q.radius / r_max) * (q.radius / r_max);
       if(!(se > 0) || !std::isfinite(se) || !std::isfinite(value))
         continue;
-      const double w = 1 / (se * se);
-      w0 += w;
-      w1 += w * x;
-      w2 += w * x * x;
-      h0 += w * value;
-      h1 += w * value * x;
+      line.add((q.radius / r_max) * (q.radius / r_max), value, 1 / (se * se));
     }
-    const double det = w0 * w2 - w1 * w1;
-    if(!(det > 1e-12 * w0 * w2))
+    if(!(line.determinant() > 1e-12 * line.w0 * line.w2))
       continue;
-    const double c = (w0 * h1 - w1 * h0) / det;  // per (r / r_max)^2
-    const double squared = (std::max)(0., c * c - w0 / det) / (r_max * r_max * r_max * r_max);
+    const double c = line.slope();  // per (r / r_max)^2
+    const double squared = (std::max)(0., c * c - line.slope_variance()) / (r_max * r_max * r_max * r_max);
     (which == 0 ? rates.squared_H : rates.squared_K) = squared;
   }
   return rates;
