@@ -214,7 +214,7 @@ def readme_peers_table(rows):
               percent(jet["median_relative_H_error"])],
              ["CloudCompare, normals and mean curvature, %s (its best)" % best["setting"], "%s s" % best["wall_s"],
               mib(float(best["peak_mib"])), percent(best["median_relative_H_error"])]]
-    return table(["{:,} noisy points".format(int(rows[0]["n"])), "wall", "peak memory", "median error of H"],
+    return table(["{:,} noisy points".format(int(rows[0]["n"])), "wall", "peak memory", "median error of abs(H)"],
                  lines).replace("|---|---|---|---|", "| --- | --- | --- | --- |")
 
 
@@ -289,7 +289,8 @@ def main():
     peers_provenance, peer_rows = read_peers(args.peers)
     two, one = runs(two_rows), runs(one_rows)
     if two["noisy"].n != one["noisy"].n:
-        raise ValueError("the one-thread run has %d points, the other's largest size %d" % (one["noisy"].n, two["noisy"].n))
+        raise ValueError("the one-thread run has %d points, the other's largest size %d"
+                         % (one["noisy"].n, two["noisy"].n))
     manual = {
         "job": "%s\n\n%s\n" % (commands(provenance, one_provenance), manual_table(two, one)),
         "growth": "%s\n\n%s\n" % (commands(provenance), growth_table(two_rows)),
