@@ -5,7 +5,8 @@
 //
 //   benchmark_pipeline [--sizes 100000,300000,1000000] [--surfaces noisy,clean]
 //                      [--csv FILE] [--time-limit SECONDS] [--jet-max N] [--no-jet]
-//                      [--no-bunny] [--threads N] [--program PATH] [--tmp DIR] [FILE...]
+//                      [--no-bunny] [--no-pipeline] [--no-parts] [--threads N] [--program PATH]
+//                      [--tmp DIR] [--write-points DIR] [FILE...]
 //
 // Inputs: an ellipsoid with semi-axes 1, 0.7, 0.4 sampled uniformly in area
 // (cas3_analytic_surfaces.h), clean, and noisy (Gaussian noise of 0.1 x the
@@ -43,6 +44,14 @@
 //   program    (--program PATH) the conformal_curvature binary on the
 //              points written as .xyz, timed from outside (wall; processor
 //              time and peak memory from wait4); it also reads the text file.
+// --no-pipeline and --no-parts leave those processes out (the peers'
+// benchmark, benchmark_peers.py, needs only the unit, jet fitting and the
+// program). --write-points DIR keeps what a comparison of accuracy needs:
+// each ellipsoid as DIR/ellipsoid_<noisy|clean>_<n>.xyz, its truth per point
+// as ..._truth.txt (a line `# spacing S`, then `H nx ny nz`, the true mean
+// curvature and outward unit normal), jet fitting's mean curvature per point
+// as ..._jet_H.txt (its sign is the arbitrary one of the fitted frame) and,
+// with --program, the program's output folder ..._program/.
 // --threads N limits TBB to N threads (tbb::global_control) in every child:
 // `--threads 1` runs the parallel stages serially in the same binary, for
 // the serial-versus-parallel speedup (the Delaunay build and jet fitting are
@@ -129,10 +138,11 @@ struct Options
   std::string csv;
   std::string program;
   std::string tmp;
+  std::string write_points;
   double time_limit = 0;  // 0: by the number of points (time_limit_for())
   std::size_t jet_max = 3000000;
   std::size_t threads = 0;  // 0: TBB's default
-  bool jet = true, bunny = true;
+  bool jet = true, bunny = true, pipeline = true, parts = true;
 };
 
 std::vector<std::string> split_list(const std::string& s)
@@ -168,12 +178,15 @@ Options parse(int argc, char* argv[])
     else if(arg == "--jet-max") o.jet_max = std::stoul(value());
     else if(arg == "--no-jet") o.jet = false;
     else if(arg == "--no-bunny") o.bunny = false;
+    else if(arg == "--no-pipeline") o.pipeline = false;
+    else if(arg == "--no-parts") o.parts = false;
+    else if(arg == "--write-points") o.write_points = value();
     else if(arg == "--threads") o.threads = std::stoul(value());
     else if(arg == "--help" || arg == "-h")
     {
       std::cout << "benchmark_pipeline [--sizes N,N,...] [--surfaces noisy,clean] [--csv FILE]\n"
-                   "  [--time-limit SECONDS] [--jet-max N] [--no-jet] [--no-bunny]\n"
-                   "  [--threads N] [--program PATH] [--tmp DIR] [FILE...]\n";
+                   "  [--time-limit SECONDS] [--jet-max N] [--no-jet] [--no-bunny] [--no-pipeline]\n"
+                   "  [--no-parts] [--threads N] [--program PATH] [--tmp DIR] [--write-points DIR] [FILE...]\n";
       std::exit(EXIT_SUCCESS);
     }
     else if(arg.rfind("--", 0) == 0) { std::cerr << "unknown option " << arg << "\n"; std::exit(EXIT_FAILURE); }
@@ -351,7 +364,23 @@ struct Input
   std::string name;
   std::vector<Point> points;
   std::vector<Vector> normals;  // a file's, else empty (the program's .xyz has none)
+  std::string kept;  // with --write-points: the path of the written .xyz less ".xyz", else empty
 };
+
+void write_xyz(const std::vector<Point>& points, const std::string& path)
+{
+  std::string text;
+  for(const Point& p : points)
+  {
+    char line[96];
+    const int n = std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", p.x(), p.y(), p.z());
+    text.append(line, std::size_t(n));
+  }
+  std::ofstream out(path);
+  out << text;
+  if(!out)
+    throw std::runtime_error("cannot write " + path);
+}
 
 std::string number(double x, const char* format = "%.4g")
 {
@@ -370,6 +399,7 @@ void measure_delaunay(Child_meter& m, const Input& in)
 
 void measure_jet(Child_meter& m, const Input& in)
 {
+  std::vector<double> mean_curvatures;  // kept for --write-points only
   m.stage("jet fitting, 120 neighbors", "reference", [&] {
     typedef CGAL::Search_traits_3<K> Traits;
     typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
@@ -378,6 +408,8 @@ void measure_jet(Child_meter& m, const Input& in)
     std::vector<Point> neighbors;
     neighbors.reserve(120);
     double sum = 0;
+    if(!in.kept.empty())
+      mean_curvatures.reserve(in.points.size());
     for(const Point& p : in.points)
     {
       neighbors.clear();
@@ -386,9 +418,19 @@ void measure_jet(Child_meter& m, const Input& in)
       Fitting fitting;
       const Fitting::Monge_form form = fitting(neighbors.begin(), neighbors.end(), 2, 2);
       sum += form.principal_curvatures(0) + form.principal_curvatures(1);
+      if(!in.kept.empty())
+        mean_curvatures.push_back(0.5 * (form.principal_curvatures(0) + form.principal_curvatures(1)));
     }
     return "Monge_via_jet_fitting(2, 2) per point, kd-tree k-NN; checksum " + number(sum);
   });
+  if(!in.kept.empty())
+  {
+    std::ofstream out(in.kept + "_jet_H.txt");
+    out.precision(17);
+    for(double H : mean_curvatures) out << H << '\n';
+    if(!out)
+      throw std::runtime_error("cannot write " + in.kept + "_jet_H.txt");
+  }
 }
 
 void measure_parts(Child_meter& m, const Input& in)
@@ -528,18 +570,10 @@ std::vector<Record> measure_program(const std::string& program, const Input& in,
 {
   const fs::path dir = fs::path(tmp) / ("benchmark_pipeline_program_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string xyz = (dir / "points.xyz").string();
-  {
-    std::string text;
-    for(const Point& p : in.points)
-    {
-      char line[96];
-      const int n = std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", p.x(), p.y(), p.z());
-      text.append(line, std::size_t(n));
-    }
-    std::ofstream(xyz) << text;
-  }
-  const std::string out = (dir / "out").string();
+  const std::string xyz = in.kept.empty() ? (dir / "points.xyz").string() : in.kept + ".xyz";
+  if(in.kept.empty())
+    write_xyz(in.points, xyz);
+  const std::string out = in.kept.empty() ? (dir / "out").string() : in.kept + "_program";
   const double w0 = wall_seconds();
   const pid_t pid = ::fork();
   if(pid == 0)
@@ -635,13 +669,29 @@ void run(const Options& o, std::ofstream& csv, const Input& in)
   std::vector<Record> records;
   auto add = [&](const std::vector<Record>& more) { records.insert(records.end(), more.begin(), more.end()); };
   add(in_child("delaunay", time_limit, [&](Child_meter& m) { measure_delaunay(m, in); }));
-  add(in_child("pipeline", time_limit, [&](Child_meter& m) { measure_pipeline(m, in, o.tmp); }));
-  add(in_child("parts", time_limit, [&](Child_meter& m) { measure_parts(m, in); }));
+  if(o.pipeline)
+    add(in_child("pipeline", time_limit, [&](Child_meter& m) { measure_pipeline(m, in, o.tmp); }));
+  if(o.parts)
+    add(in_child("parts", time_limit, [&](Child_meter& m) { measure_parts(m, in); }));
   if(o.jet && in.points.size() <= o.jet_max)
     add(in_child("jet", time_limit, [&](Child_meter& m) { measure_jet(m, in); }));
   if(!o.program.empty())
     add(measure_program(o.program, in, o.tmp, time_limit));
   report(csv, in.name, in.points.size(), load_before, records);
+}
+
+// The truth of a sample for --write-points: `# spacing S`, then `H nx ny nz` per point.
+template <class Sample>
+void write_truth(const Sample& sample, const std::string& path)
+{
+  std::ofstream truth(path);
+  truth.precision(17);
+  truth << "# spacing " << sample.spacing << '\n';
+  for(std::size_t i = 0; i < sample.normals.size(); ++i)
+    truth << sample.mean_curvature[i] << ' ' << sample.normals[i].x() << ' ' << sample.normals[i].y() << ' '
+          << sample.normals[i].z() << '\n';
+  if(!truth)
+    throw std::runtime_error("cannot write " + path);
 }
 
 } // namespace
@@ -692,6 +742,21 @@ int main(int argc, char* argv[])
         cas3_analytic::add_normal_noise(sample, 0.1, 21);
       in.name = "ellipsoid 1:0.7:0.4 " + (kind == "noisy" ? std::string("noise 0.1 spacing") : std::string("clean"));
       in.points = std::move(sample.points);
+      if(!o.write_points.empty())
+      {
+        in.kept = (fs::path(o.write_points) / ("ellipsoid_" + kind + "_" + std::to_string(n))).string();
+        try
+        {
+          fs::create_directories(o.write_points);
+          write_xyz(in.points, in.kept + ".xyz");
+          write_truth(sample, in.kept + "_truth.txt");
+        }
+        catch(const std::exception& e)
+        {
+          std::cerr << e.what() << "\n";
+          return EXIT_FAILURE;
+        }
+      }
       run(o, csv, in);
     }
   for(const std::string& f : o.files)

@@ -6,7 +6,7 @@ write), each in a process of its own, alternating; the two curvatures.ply
 compared byte for byte.
 
     PYTHONPATH=build/python /usr/bin/python3 benchmark/Conformal_alpha_shapes_3/benchmark_python.py \
-        --program build/examples/Conformal_alpha_shapes_3/conformal_curvature --points 1000000
+        --program build/examples/Conformal_alpha_shapes_3/conformal_curvature --points 1000000 [--csv FILE]
 
 The cloud is a noisy ellipsoid (noise 0.1 sample spacings along the normals),
 written as .xyz and read by both through the program's reader. Both run with
@@ -17,6 +17,9 @@ environment: GLIBC_TUNABLES and MALLOC_ARENA_MAX) unless --default-malloc.
 With --interrupt T1,T2,...: instead, Ctrl-C latency: a call per T, SIGINT
 sent T seconds after it starts, the time from the signal to the
 KeyboardInterrupt printed.
+
+--csv FILE writes a row per run, headed by the `# commit`, `# machine` and
+`# command` lines (cas3_benchmark.py).
 """
 import argparse
 import json
@@ -28,6 +31,11 @@ import tempfile
 import time
 
 import numpy as np
+
+from cas3_benchmark import write_csv
+
+COLUMNS = ["run", "points", "program_wall_s", "program_cpu_s", "program_peak_mib", "call_wall_s", "call_cpu_s",
+           "call_and_write_s", "module_peak_mib", "returned_mib", "same_bytes"]
 
 CHILD = r"""
 import json, resource, sys, time
@@ -97,6 +105,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--default-malloc", action="store_true")
     parser.add_argument("--interrupt", help="comma list of seconds after the start of a call to send SIGINT")
+    parser.add_argument("--csv", help="where to write the runs as CSV")
     args = parser.parse_args()
     env = dict(os.environ)
     if not args.default_malloc:
@@ -123,6 +132,11 @@ def main():
                   f"{module['call_cpu']:.1f} s CPU, call + write_ply {module['call_and_write']:.1f} s, "
                   f"peak {module['peak_mib']:.0f} MiB (returned arrays {module['returned_mib']:.0f} MiB) | "
                   f"same curvatures.ply bytes: {same}")
+        if args.csv:
+            write_csv(args.csv, COLUMNS, [
+                [k + 1, args.points, "%.3f" % p["total"], "%.3f" % p["cpu"], "%.1f" % p["peak_mib"],
+                 "%.3f" % m["call"], "%.3f" % m["call_cpu"], "%.3f" % m["call_and_write"], "%.1f" % m["peak_mib"],
+                 "%.1f" % m["returned_mib"], int(same)] for k, (p, m, same) in enumerate(rows)])
         program, module, same = rows[-1]
         print(f"ratios (last run): call / program job {module['call'] / program['total']:.3f}, "
               f"(call + write_ply) / program job {module['call_and_write'] / program['total']:.3f}, "

@@ -5,7 +5,7 @@ relative difference of H per layer, every index once), wall and processor
 time, and peak memory (one run's process; each worker's).
 
     PYTHONPATH=build/python /usr/bin/python3 benchmark/Conformal_alpha_shapes_3/benchmark_tiles.py \
-        --points 1000000 --tile-points 250000 --workers 2
+        --points 1000000 --tile-points 250000 --workers 2 [--csv FILE]
 
 The scene is the tests' (python/tests/test_tiles.py): a closed ellipsoid
 above an open wavy sheet, Gaussian noise of 0.1 spacings, 5 far outliers.
@@ -20,6 +20,9 @@ spacing): a translation changes no distance beyond rounding, but it changes
 every point's coordinate hash, so the points that sample the spacing and
 the noise, so the denoising and the front; the tiled run's difference in
 `a` is read against that spread.
+The result is printed as JSON; --csv FILE also writes it as `quantity,value`
+rows (nested keys joined by dots) headed by the `# commit`, `# machine` and
+`# command` lines (cas3_benchmark.py).
 """
 import argparse
 import json
@@ -34,6 +37,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python", "tests"))
 from test_tiles import scene  # noqa: E402
+from cas3_benchmark import write_csv  # noqa: E402
 
 ONE_RUN = r"""
 import json, resource, sys, time
@@ -98,6 +102,13 @@ def a_spread(cloud):
     return {f"{shift:g}": a(shift) / reference - 1 for shift in (1e-10, 1e-7, 1e-4)}
 
 
+def flatten(value, prefix=""):
+    """[dotted key, value] for every leaf of a nested dict."""
+    if not isinstance(value, dict):
+        return [[prefix, value]]
+    return [row for key, item in value.items() for row in flatten(item, f"{prefix}.{key}" if prefix else str(key))]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--points", type=int, default=1_000_000)
@@ -107,6 +118,7 @@ def main():
                         help="a cloud the program reads (.xyz, .ply, ...) instead of the scene, with its normals")
     parser.add_argument("--folder", default=None, help="where the cloud and the outputs go (default: a temporary one)")
     parser.add_argument("--no-one-run", action="store_true")
+    parser.add_argument("--csv", help="where to write the result as quantity,value rows")
     parser.add_argument("--a-spread", action="store_true",
                         help="also one run's automatic scale on the cloud translated by tiny fractions of its size")
     args = parser.parse_args()
@@ -151,6 +163,8 @@ def main():
     if args.a_spread:
         result["one_run_a_spread"] = a_spread(cloud)
     print(json.dumps(result, indent=1))
+    if args.csv:
+        write_csv(args.csv, ["quantity", "value"], flatten(result))
 
 
 if __name__ == "__main__":
