@@ -185,7 +185,8 @@ the two nearest bins) and normalised to sum 1. Points without a shape
 index (flat, or NaN) count in neither histogram. With normals, each ring
 also gets a histogram of the cosines between the centre's normal and the
 points' normals, and one of the points' heights over the centre's tangent
-plane over the ring's radius (both over [-1, 1]). Distances are Euclidean,
+plane over the ring's radius (both over [-1, 1]; a NaN normal counts in
+neither). Distances are Euclidean,
 so the rings suit surfaces whose sheets are farther apart than the
 largest ring's width. The rings' points are found in kd-trees
 (`CGAL::Kd_tree`).
@@ -415,9 +416,12 @@ Region_descriptors region_descriptors(const PointRange& points, const LayerRange
           double* geometry_block = block + n_layers * std::size_t(per_layer);
           for(const double v : {cosine, height})
           {
-            const internal::Soft_bin b = internal::soft_bin(v, -1.0, 1.0, geometry_bins);
-            geometry_block[b.first] += b.first_weight;
-            geometry_block[b.second] += b.second_weight;
+            if(std::isfinite(v))  // a NaN normal counts in neither histogram
+            {
+              const internal::Soft_bin b = internal::soft_bin(v, -1.0, 1.0, geometry_bins);
+              geometry_block[b.first] += b.first_weight;
+              geometry_block[b.second] += b.second_weight;
+            }
             geometry_block += geometry_bins;
           }
         }
