@@ -166,7 +166,7 @@ Options parse(int argc, char* argv[])
 // A surface's points and normals (empty when the file has none).
 cas3::Point_cloud read_surface(const std::string& path, const std::string& chains, double spacing)
 {
-  const std::string extension = cas3::lower_extension(path);
+  const std::string extension = cas3::read_detail::lower_extension(path);
   cas3::Point_cloud cloud;
   if(extension == ".pdb" || extension == ".ent")
   {

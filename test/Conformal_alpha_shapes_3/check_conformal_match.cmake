@@ -9,7 +9,7 @@ set(out_dir ${WORK_DIR}/out)
 
 # fails(NAME REGEX ARGS...): status 1, the message matching REGEX, no output directory
 function(fails name regex)
-  execute_process(COMMAND ${PROGRAM} ${ARGN} --output ${out_dir} RESULT_VARIABLE result OUTPUT_VARIABLE out
+  execute_process(COMMAND ${PROGRAM} --output ${out_dir} ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out
                   ERROR_VARIABLE err)
   if(NOT result EQUAL 1)
     set(failures "${failures}\n${name}: status ${result}, expected 1: ${out}${err}" PARENT_SCOPE)
@@ -23,8 +23,9 @@ endfunction()
 file(WRITE ${WORK_DIR}/empty.xyz "")
 file(WRITE ${WORK_DIR}/two.xyz "0 0 0\n1 0 0\n")
 file(WRITE ${WORK_DIR}/bad.xyz "0 0 0\n1 0 x\n")
-fails(missing "[^\n]*missing.xyz: cannot be opened for reading" ${WORK_DIR}/missing.xyz ${SURFACE})
-fails(missing_b "[^\n]*missing.xyz: cannot be opened for reading" ${SURFACE} ${WORK_DIR}/missing.xyz)
+fails(missing "[^\n]*missing.xyz: no such file" ${WORK_DIR}/missing.xyz ${SURFACE})
+fails(missing_b "[^\n]*missing.xyz: no such file" ${SURFACE} ${WORK_DIR}/missing.xyz)
+fails(missing_pdb "[^\n]*missing.pdb: cannot be opened for reading" ${WORK_DIR}/missing.pdb ${SURFACE})
 fails(empty "[^\n]*empty.xyz" ${WORK_DIR}/empty.xyz ${SURFACE})
 fails(two_points "[^\n]*two.xyz: 2 points, a surface needs at least 3" ${WORK_DIR}/two.xyz ${SURFACE})
 fails(not_a_number "[^\n]*bad.xyz" ${WORK_DIR}/bad.xyz ${SURFACE})
@@ -37,7 +38,7 @@ fails(radius_negative "--radius: must be > 0: '-1'" ${SURFACE} ${SURFACE} --radi
 fails(tolerance_nan "--tolerance: not a number: 'nan'" ${SURFACE} ${SURFACE} --tolerance nan)
 fails(region_beyond "--region: 100000 is not a point of" ${SURFACE} ${SURFACE} --region 100000)
 fails(chains_of_xyz "[^\n]*--chains-a and --chains-b are for PDB files" ${SURFACE} ${SURFACE} --chains-a A)
-fails(pdb_no_chain "[^\n]*1crn.pdb: every atom was left out" ${PDB} ${SURFACE} --chains-a Z)
+fails(pdb_no_chain "[^\n]*1crn.pdb: no atom kept in chain\\(s\\) 'Z'" ${PDB} ${SURFACE} --chains-a Z)
 fails(value_missing "--top: needs a value" ${SURFACE} ${SURFACE} --top)
 
 # crambin against itself: the centres' best candidates are themselves
