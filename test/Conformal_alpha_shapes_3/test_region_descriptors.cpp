@@ -169,6 +169,10 @@ BOOST_AUTO_TEST_CASE(bad_arguments)
                     std::invalid_argument);
   BOOST_CHECK_THROW(CAS3::region_descriptors(f.points, f.layers, c, CAS3::parameters::shape_index_bins(1)),
                     std::invalid_argument);
+  std::vector<Point> with_nan = f.points;
+  with_nan[3] = Point(0, std::numeric_limits<double>::quiet_NaN(), 0);
+  BOOST_CHECK_THROW(CAS3::region_descriptors(with_nan, f.layers, c), std::invalid_argument);
+  BOOST_CHECK_THROW(CAS3::farthest_point_sample(with_nan, 2), std::invalid_argument);
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -89,6 +89,13 @@ inline Soft_bin soft_bin(double value, double low, double high, int bins)
   return {first, (std::min)(first + 1, bins - 1), 1 - w, w};
 }
 
+template <class Point>
+bool finite_point(const Point& p)
+{
+  return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y()))
+         && std::isfinite(CGAL::to_double(p.z()));
+}
+
 template <class NamedParameters>
 std::vector<double> ring_radii_of(const NamedParameters& np)
 {
@@ -128,7 +135,8 @@ order, when `n` is at least the number of points.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\throws std::invalid_argument when the first index is not a point's.
+\throws std::invalid_argument when the first index is not a point's, or a
+coordinate is NaN or infinite.
 */
 template <class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<std::size_t> farthest_point_sample(const PointRange& points, std::size_t n,
@@ -142,6 +150,8 @@ std::vector<std::size_t> farthest_point_sample(const PointRange& points, std::si
   for(const auto& element : points)
   {
     const auto& p = get(point_map, element);
+    if(!internal::finite_point(p))
+      throw std::invalid_argument("farthest_point_sample: a point's coordinate is NaN or infinite");
     xyz.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
   }
   const std::size_t first = choose_parameter(get_parameter(np, internal_np_cas3::first_point_index), std::size_t(0));
@@ -248,7 +258,7 @@ half the time (the manual, "Matching Surface Regions").
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\throws std::invalid_argument on rings that do not increase, weights that
+\throws std::invalid_argument on a NaN or infinite coordinate, rings that do not increase, weights that
 are not one value >= 0 per ring, a layer whose size is not the number of
 points, no layer, a centre that is not a point's index, fewer than 2 shape
 index or geometry bins or 1 curvedness bin, `thinning` < 1 or
@@ -298,7 +308,11 @@ Region_descriptors region_descriptors(const PointRange& points, const LayerRange
 
   std::vector<Point> xyz;
   for(const Element& element : points)
+  {
     xyz.push_back(get(point_map, element));
+    if(!internal::finite_point(xyz.back()))
+      throw std::invalid_argument("region_descriptors: a point's coordinate is NaN or infinite");
+  }
   const std::size_t n = xyz.size();
   std::vector<Vector> normals, center_normals;
   if constexpr(with_normals)
