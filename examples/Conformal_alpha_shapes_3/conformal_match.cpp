@@ -308,7 +308,7 @@ int run(const Options& o)
                 "A: %s, %zu points, %zu centres\nB: %s, %zu points, %zu candidates\n"
                 "registration of B onto A (x -> R x + t):\n  R = [[%.6f, %.6f, %.6f], [%.6f, %.6f, %.6f], "
                 "[%.6f, %.6f, %.6f]]\n  t = [%.4f, %.4f, %.4f]\n  consistent: %.3f of the centres' best matches\n"
-                "time: curvature %.1f s, descriptors and matching %.1f s\n",
+                "time: reading (and sampling) and curvature %.1f s, descriptors and matching %.1f s\n",
                 o.a.c_str(), a.points.size(), centers.size(), o.b.c_str(), b.points.size(), candidates.size(),
                 r.rotation[0][0], r.rotation[0][1], r.rotation[0][2], r.rotation[1][0], r.rotation[1][1],
                 r.rotation[1][2], r.rotation[2][0], r.rotation[2][1], r.rotation[2][2], r.translation[0],
