@@ -5,6 +5,7 @@
 // caller passes. The GIL is released while the library computes, which
 // stops on Ctrl-C (without_gil) and reports its progress (Checkpoint).
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
+#include <CGAL/Conformal_alpha_shapes_3/match_regions.h>
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -33,6 +34,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <tuple>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -1292,6 +1294,196 @@ py::array_t<double> denoise(const Doubles& points_array, std::optional<int> neig
   return out;
 }
 
+
+// Region matching (region_descriptors.h, match_regions.h): numpy in and out;
+// the Python half (matching.py) checks the arguments and makes the classes.
+
+// What region_descriptors() reads of a point's curvature in a layer.
+struct Layer_value
+{
+  struct
+  {
+    double max_curvature, min_curvature;
+  } principal;
+  double radius;
+};
+
+typedef py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> Indices;
+typedef std::array<double, 3> Xyz;
+
+std::vector<Xyz> to_xyz(const Doubles& a, const char* what)
+{
+  const std::size_t n = check_rows(a, what);
+  std::vector<Xyz> out(n);
+  std::copy(a.data(), a.data() + 3 * n, out.front().data());
+  return out;
+}
+
+py::array_t<std::int64_t> index_array(const std::vector<std::size_t>& values)
+{
+  py::array_t<std::int64_t> out = new_array<std::int64_t>(values.size());
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::array_t<std::int64_t> farthest_point_sample(const Doubles& points_array, std::size_t n, std::size_t first)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  return index_array(without_gil([&] {
+    return CAS3::farthest_point_sample(points, n, CAS3::parameters::first_point_index(first));
+  }));
+}
+
+// The descriptors of `centers`: (descriptors (M, D), histogram bins, weights, kinds).
+py::tuple region_descriptors(const Doubles& points_array, const Doubles& k1, const Doubles& k2, const Doubles& radius,
+                             const Indices& centers_array, const std::optional<Doubles>& normals_array,
+                             const std::optional<Doubles>& center_normals_array, const std::vector<double>& rings,
+                             const std::vector<double>& ring_weights, int shape_bins, int curvedness_bins,
+                             double curvedness_range, int geometry_bins, double dense_radius, std::size_t thinning,
+                             int threads)
+{
+  const std::vector<Point> points = to_triples<Point>(points_array, "points");
+  const std::size_t n = points.size();
+  if(k1.ndim() != 2 || k2.ndim() != 2 || radius.ndim() != 2 || k1.shape(0) != k2.shape(0)
+     || k1.shape(0) != radius.shape(0) || k1.shape(1) != k2.shape(1) || k1.shape(1) != radius.shape(1))
+    throw py::value_error("region_descriptors: k1, k2 and radius must be (layers, N) arrays of one shape");
+  std::vector<std::vector<Layer_value> > layers(std::size_t(k1.shape(0)));
+  for(std::size_t l = 0; l < layers.size(); ++l)
+    for(std::size_t i = 0; i < std::size_t(k1.shape(1)); ++i)
+      layers[l].push_back({{k1.at(l, i), k2.at(l, i)}, radius.at(l, i)});
+  const std::vector<std::int64_t> centers(centers_array.data(), centers_array.data() + centers_array.size());
+  const auto options = CAS3::parameters::ring_radii(rings, CAS3::parameters::ring_weights(ring_weights,
+    CAS3::parameters::shape_index_bins(shape_bins, CAS3::parameters::curvedness_bins(curvedness_bins,
+    CAS3::parameters::curvedness_range(curvedness_range, CAS3::parameters::geometry_bins(geometry_bins,
+    CAS3::parameters::dense_radius(dense_radius, CAS3::parameters::thinning(thinning))))))));
+  const Thread_cap cap(threads);
+  CAS3::Region_descriptors r;
+  if(normals_array)
+  {
+    const std::vector<Vector> normals = to_triples<Vector>(*normals_array, "normals");
+    const std::vector<Vector> center_normals =
+      center_normals_array ? to_triples<Vector>(*center_normals_array, "center_normals") : normals;
+    if(normals.size() != n || center_normals.size() != n)
+      throw py::value_error("region_descriptors: " + std::to_string(n) + " points but "
+                            + std::to_string((std::min)(normals.size(), center_normals.size())) + " normals");
+    typedef std::tuple<Point, Vector, Vector> Oriented;
+    std::vector<Oriented> oriented;
+    for(std::size_t i = 0; i < n; ++i)
+      oriented.emplace_back(points[i], normals[i], center_normals[i]);
+    r = without_gil([&] {
+      return CAS3::region_descriptors<CGAL::Parallel_if_available_tag>(
+        oriented, layers, centers,
+        CAS3::parameters::center_normal_map(CGAL::Nth_of_tuple_property_map<2, Oriented>(), options)
+          .point_map(CGAL::Nth_of_tuple_property_map<0, Oriented>())
+          .normal_map(CGAL::Nth_of_tuple_property_map<1, Oriented>()));
+    });
+  }
+  else
+    r = without_gil([&] { return CAS3::region_descriptors<CGAL::Parallel_if_available_tag>(points, layers, centers, options); });
+  py::array_t<double> descriptors(std::vector<py::ssize_t>{py::ssize_t(r.size()), py::ssize_t(r.width)});
+  std::copy(r.values.begin(), r.values.end(), descriptors.mutable_data());
+  return py::make_tuple(descriptors, r.histogram_bins, r.histogram_weights, r.histogram_kinds);
+}
+
+// The C++ form of a Python Regions.
+CAS3::Region_descriptors regions_of(const py::object& regions)
+{
+  CAS3::Region_descriptors r;
+  const Doubles points = regions.attr("points").cast<Doubles>();
+  const Indices centers = regions.attr("centers").cast<Indices>();
+  const Doubles values = regions.attr("descriptors").cast<Doubles>();
+  const std::vector<Xyz> xyz = to_xyz(points, "points");
+  for(py::ssize_t i = 0; i < centers.size(); ++i)
+  {
+    r.centers.push_back(std::size_t(centers.data()[i]));
+    r.center_points.push_back(xyz.at(r.centers.back()));
+  }
+  r.rings = regions.attr("rings").cast<std::vector<double> >();
+  const auto bins = regions.attr("bins").cast<std::pair<int, int> >();
+  r.shape_index_bins = bins.first;
+  r.curvedness_bins = bins.second;
+  r.histogram_bins = regions.attr("histogram_bins").cast<std::vector<int> >();
+  r.histogram_weights = regions.attr("histogram_weights").cast<std::vector<double> >();
+  r.histogram_kinds = regions.attr("histogram_kinds").cast<std::vector<int> >();
+  r.width = values.ndim() == 2 ? std::size_t(values.shape(1)) : 0;
+  if(values.ndim() != 2 || std::size_t(values.shape(0)) != r.size())
+    throw py::value_error("the regions' descriptors must be a (centres, values) array");
+  r.values.assign(values.data(), values.data() + values.size());
+  return r;
+}
+
+py::array_t<double> histogram_distances(const py::object& a_regions, const py::object& b_regions, bool balance,
+                                        int threads)
+{
+  const CAS3::Region_descriptors a = regions_of(a_regions), b = regions_of(b_regions);
+  const Thread_cap cap(threads);
+  const std::vector<double> d =
+    without_gil([&] { return CAS3::histogram_distances<CGAL::Parallel_if_available_tag>(a, b, balance); });
+  py::array_t<double> out(std::vector<py::ssize_t>{py::ssize_t(a.size()), py::ssize_t(b.size())});
+  std::copy(d.begin(), d.end(), out.mutable_data());
+  return out;
+}
+
+py::tuple motion_arrays(const CAS3::Rigid_motion& m)
+{
+  py::array_t<double> r(std::vector<py::ssize_t>{3, 3}), t = new_array<double>(3);
+  for(int i = 0; i < 3; ++i)
+  {
+    std::copy(m.rotation[std::size_t(i)].begin(), m.rotation[std::size_t(i)].end(), r.mutable_data() + 3 * i);
+    t.mutable_data()[i] = m.translation[std::size_t(i)];
+  }
+  return py::make_tuple(r, t);
+}
+
+py::array_t<bool> bool_array(const std::vector<bool>& values)
+{
+  py::array_t<bool> out = new_array<bool>(values.size());
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::tuple fit_rigid(const Doubles& source, const Doubles& target, const std::optional<Doubles>& weights)
+{
+  std::vector<double> w;
+  if(weights)
+    w.assign(weights->data(), weights->data() + weights->size());
+  return motion_arrays(CAS3::fit_rigid(to_xyz(source, "source"), to_xyz(target, "target"), w));
+}
+
+py::tuple register_correspondences(const Doubles& source, const Doubles& target, double tolerance,
+                                   std::size_t iterations, unsigned int seed)
+{
+  const std::vector<Xyz> s = to_xyz(source, "source"), t = to_xyz(target, "target");
+  const CAS3::Registration r = without_gil([&] {
+    return CAS3::register_correspondences(s, t, CAS3::parameters::inlier_tolerance(tolerance)
+                                                  .number_of_iterations(iterations).random_seed(seed));
+  });
+  const py::tuple motion = motion_arrays(r.motion);
+  return py::make_tuple(motion[0], motion[1], bool_array(r.inliers));
+}
+
+// (candidates, scores, rotation, translation, inliers, reranked), the index arrays (M, top)
+py::tuple match_regions(const py::object& a_regions, const py::object& b_regions, std::size_t top, std::size_t pool,
+                        double tolerance, std::size_t iterations, unsigned int seed, int threads, bool balance)
+{
+  const CAS3::Region_descriptors a = regions_of(a_regions), b = regions_of(b_regions);
+  const Thread_cap cap(threads);
+  const CAS3::Region_matches m = without_gil([&] {
+    return CAS3::match_regions<CGAL::Parallel_if_available_tag>(
+      a, b, CAS3::parameters::number_of_candidates(top, CAS3::parameters::candidate_pool(pool,
+            CAS3::parameters::inlier_tolerance(tolerance, CAS3::parameters::balance_kinds(balance))))
+              .number_of_iterations(iterations).random_seed(seed));
+  });
+  const std::vector<py::ssize_t> shape{py::ssize_t(a.size()), py::ssize_t(m.top)};
+  py::array_t<std::int64_t> candidates(shape), reranked(shape);
+  py::array_t<double> scores(shape);
+  std::copy(m.candidates.begin(), m.candidates.end(), candidates.mutable_data());
+  std::copy(m.reranked.begin(), m.reranked.end(), reranked.mutable_data());
+  std::copy(m.scores.begin(), m.scores.end(), scores.mutable_data());
+  const py::tuple motion = motion_arrays(m.motion);
+  return py::make_tuple(candidates, scores, motion[0], motion[1], bool_array(m.inliers), reranked);
+}
+
 } // namespace
 
 PYBIND11_MODULE(_native, m)
@@ -1350,4 +1542,10 @@ PYBIND11_MODULE(_native, m)
     .def("suggest_scale", &Shape_handle::suggest_scale)
     .def("classify_facets", &Shape_handle::classify_facets)
     .def("surface", &Shape_handle::surface);
+  m.def("farthest_point_sample", &farthest_point_sample);
+  m.def("region_descriptors", &region_descriptors);
+  m.def("histogram_distances", &histogram_distances);
+  m.def("fit_rigid", &fit_rigid);
+  m.def("register_correspondences", &register_correspondences);
+  m.def("match_regions", &match_regions);
 }

@@ -29,15 +29,25 @@ the first from the matches (CA RMSD), a rotated, translated copy of the
 first chain matched against itself (invariance), and the times (wall):
 the descriptors and matching of the pair, and the curvature of the two
 surfaces (conformal_curvature, run again right after, for the time only).
+Last, the time at a given size (--timing-points, 20,000 by default): 1HPV
+chains A and B sampled at 0.35 A, each cut to its first N farthest points,
+their curvature at the five radii (conformal_curvature) against their
+descriptors and matching (the same 300 centres and 2,000 candidates).
+
+The results go to the standard output and to a CSV file (--csv) headed by
+the lines "# commit", "# machine" and "# command", as the C++ benchmarks'.
 
 Usage:
-  benchmark_matching.py --build BUILD_DIR [--work DIR] [--pairs hpv,tii,hpv-buried,tii-buried] [--no-fpfh]
+  benchmark_matching.py --build BUILD_DIR [--work DIR] [--csv FILE] [--pairs hpv,tii,hpv-buried,tii-buried]
+                        [--no-fpfh] [--timing-points N]
 BUILD_DIR holds examples/Conformal_alpha_shapes_3/{molecular_surface_points,conformal_curvature}
-and python/ (the module). Needs pymol-data; FPFH needs python3-open3d.
+and python/ (the module, whose matching is the C++ library's). Needs pymol-data; FPFH needs
+python3-open3d.
 """
 
 import argparse
 import os
+import platform
 import subprocess
 import sys
 import time
@@ -58,6 +68,50 @@ WATERS = ("HOH", "WAT", "H2O", "DOD", "SOL")
 RADII = (1.5, 3.0, 6.0, 9.0, 12.0)
 RINGS = (2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 14.0)
 CENTRES, CANDIDATES, HIT = 300, 2000, 3.0
+COLUMNS = ("pair", "method", "top1", "top10", "ca_rmsd", "consistent", "points_a", "points_b", "seconds")
+SOURCE_DIR = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+
+
+def first_output_line(command):
+    """The first line that `command` prints, or "unknown"."""
+    try:
+        lines = subprocess.run(command, capture_output=True, text=True, check=False).stdout.splitlines()
+    except OSError:
+        return "unknown"
+    return lines[0] if lines and lines[0] else "unknown"
+
+
+def proc_field(name, key):
+    """The value of the first line of /proc/`name` that starts with `key`."""
+    try:
+        with open("/proc/" + name) as f:
+            for line in f:
+                if line.startswith(key):
+                    return line[len(key):].lstrip(" \t:").rstrip("\n")
+    except OSError:
+        pass
+    return "unknown"
+
+
+def provenance():
+    """The lines "# commit", "# machine" and "# command" that head the CSV file (those of
+    benchmark/Conformal_alpha_shapes_3/include/cas3_benchmark.h)."""
+    commit = first_output_line(["git", "-C", SOURCE_DIR, "describe", "--always", "--dirty", "--tags"])
+    machine = (f"{proc_field('cpuinfo', 'model name')}, {os.cpu_count()} cores, {proc_field('meminfo', 'MemTotal')}"
+               if platform.system() == "Linux" else "unknown")
+    return f"# commit {commit}\n# machine {machine}\n# command {' '.join(sys.argv)}\n"
+
+
+def write_csv(path, rows):
+    """The rows (dicts of COLUMNS) as CSV under the provenance lines, written whole or not at all."""
+    temporary = path + ".partial"
+    with open(temporary, "w") as f:
+        f.write(provenance())
+        f.write(",".join(COLUMNS) + "\n")
+        for row in rows:
+            f.write(",".join(("%.4g" % row[c] if isinstance(row.get(c), float) else str(row.get(c, "")))
+                             for c in COLUMNS) + "\n")
+    os.replace(temporary, path)
 
 
 def read_ply(path):
@@ -133,16 +187,16 @@ def nearest_atoms(points, centres, k):
     return index
 
 
-def surface(build, work, pdb, chain, complex_chains=None):
+def surface(build, work, pdb, chain, complex_chains=None, spacing=0.4):
     """Points, normals and curvature values (the PLY's vertex array) of one chain's surface: sampled
     alone, or sampled in a complex, then only the points nearest to the chain's atoms kept (and their
     curvature computed on those points alone). Cached in work."""
     tools = os.path.join(build, "examples", "Conformal_alpha_shapes_3")
-    stem = os.path.join(work, os.path.basename(pdb)[:-4] + "_")
+    stem = os.path.join(work, os.path.basename(pdb)[:-4] + ("_" if spacing == 0.4 else "_%g_" % spacing))
     for chains in filter(None, (chain, complex_chains)):
         if not os.path.exists(stem + chains + ".xyz"):
             subprocess.run([os.path.join(tools, "molecular_surface_points"), pdb, stem + chains + ".xyz", "--chains",
-                            chains, "--normals", "--spacing", "0.4", "--quiet"], check=True)
+                            chains, "--normals", "--spacing", "%g" % spacing, "--quiet"], check=True)
     base = stem + (f"{chain}_in_{complex_chains}" if complex_chains else chain)
     if complex_chains and not os.path.exists(base + ".xyz"):
         xyz = np.loadtxt(stem + complex_chains + ".xyz")
@@ -188,22 +242,56 @@ def rates(distances, true_places, candidate_points):
     return float(np.mean(miss[:, 0] <= HIT)), float(np.mean(np.any(miss <= HIT, axis=1)))
 
 
+def timing(args, m, rows):
+    """Curvature against descriptors and matching at args.timing_points points per surface."""
+    n = args.timing_points
+    surfaces = []
+    for chain in "AB":
+        points, normals, _, _ = surface(args.build, args.work, HPV, chain, spacing=0.35)
+        if len(points) < n:
+            sys.exit(f"1HPV chain {chain} sampled at 0.35 A has {len(points)} points, fewer than {n}")
+        keep = np.sort(m.farthest_point_sample(points, n))
+        xyz = os.path.join(args.work, f"timing_{chain}_{n}.xyz")
+        np.savetxt(xyz, np.hstack([points[keep], normals[keep]]), fmt="%.6f")
+        surfaces.append((points[keep], normals[keep], xyz))
+    seconds_curvature, layers = 0.0, []
+    for _, _, xyz in surfaces:
+        out = xyz[:-4] + "_curvature"
+        seconds_curvature += curvature(args.build, xyz, out)
+        layers.append(layers_from_ply(read_ply(os.path.join(out, "curvatures.ply"))))
+    start = time.time()
+    (pa, na, _), (pb, nb, _) = surfaces
+    ra = m.region_descriptors(pa, layers[0][0], m.farthest_point_sample(pa, CENTRES), normals=na,
+                              center_normals=layers[0][1], rings=RINGS)
+    rb = m.region_descriptors(pb, layers[1][0], m.farthest_point_sample(pb, CANDIDATES), normals=nb,
+                              center_normals=layers[1][1], rings=RINGS)
+    m.match_regions(ra, rb, top=10)
+    seconds = time.time() - start
+    name = f"1HPV A/B at {n}"
+    print(f"{name:20} time: curvature of the two surfaces {seconds_curvature:.1f} s, descriptors and matching "
+          f"{seconds:.1f} s ({seconds / seconds_curvature:.2f} of the curvature's)")
+    rows.append({"pair": name, "method": "curvature of the two surfaces", "points_a": n, "points_b": n,
+                 "seconds": seconds_curvature})
+    rows.append({"pair": name, "method": "descriptors and matching", "points_a": n, "points_b": n,
+                 "seconds": seconds})
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--build", required=True)
     parser.add_argument("--work", default="benchmark_matching_work")
+    parser.add_argument("--csv", help="the CSV file of the results (default: WORK/benchmark_matching.csv)")
     parser.add_argument("--pairs", default="hpv,tii,hpv-buried,tii-buried")
     parser.add_argument("--no-fpfh", action="store_true")
+    parser.add_argument("--timing-points", type=int, default=20000, help="points per surface of the timing; 0: none")
     args = parser.parse_args()
-    # the module's matching part is numpy only: loaded from the source tree, without the native module
-    import importlib.util
-    spec = importlib.util.spec_from_file_location("matching", os.path.join(
-        os.path.dirname(os.path.abspath(__file__)), "..", "..", "python", "conformal_alpha_shapes", "matching.py"))
-    m = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(m)
+    sys.path.insert(0, os.path.join(os.path.abspath(args.build), "python"))
+    from conformal_alpha_shapes import matching as m
     os.makedirs(args.work, exist_ok=True)
+    csv_path = args.csv or os.path.join(args.work, "benchmark_matching.csv")
+    rows = []
     print("pair                 method               top-1  top-10  seconds")
-    for key in args.pairs.split(","):
+    for key in args.pairs.split(",") if args.pairs else []:
         pdb, chain_a, chain_b, complex_chains = PAIRS[key]
         if not os.path.exists(pdb):
             sys.exit(f"{pdb} is missing: install pymol-data (apt-get install pymol-data)")
@@ -221,38 +309,49 @@ def main():
         true_places = pa[centres] @ r_true.T + t_true
         name = os.path.basename(pdb)[:4].upper() + " " + (
             f"{chain_a} in {complex_chains}/{chain_b}" if complex_chains else f"{chain_a}/{chain_b}")
+        sizes = {"pair": name, "points_a": len(pa), "points_b": len(pb)}
 
         start = time.time()
         ra = m.region_descriptors(pa, la, centres, normals=na, center_normals=ca_normals, rings=RINGS)
         rb = m.region_descriptors(pb, lb, candidates, normals=nb, center_normals=cb_normals, rings=RINGS)
         matches = m.match_regions(ra, rb, top=10)
         seconds = time.time() - start
-        for method, ranked in (("curvature rings", matches.candidates), ("  re-ranked", matches.reranked)):
+        for method, ranked in (("curvature rings", matches.candidates), ("re-ranked", matches.reranked)):
             miss = np.linalg.norm(pb[ranked] - true_places[:, None, :], axis=2)
             top1, top10 = float(np.mean(miss[:, 0] <= HIT)), float(np.mean(np.any(miss <= HIT, axis=1)))
-            print(f"{name:20} {method:20} {top1:5.3f}  {top10:5.3f}  {seconds if ranked is matches.candidates else 0:7.1f}")
+            shown = seconds if ranked is matches.candidates else 0
+            print(f"{name:20} {method if ranked is matches.candidates else '  ' + method:20} {top1:5.3f}  "
+                  f"{top10:5.3f}  {shown:7.1f}")
+            rows.append(dict(sizes, method=method, top1=top1, top10=top10,
+                             seconds=seconds if ranked is matches.candidates else ""))
         placed = matches.transform(ca_b)
         rmsd = float(np.sqrt(np.mean(np.sum((placed - ca_a) ** 2, axis=1))))
         print(f"{name:20} registration B onto A: CA RMSD {rmsd:.2f} A, {matches.consistent:.0%} of the matches"
               " consistent")
+        rows.append(dict(sizes, method="registration", ca_rmsd=rmsd, consistent=float(matches.consistent)))
         # the curvature timed again now, the machine as loaded as for the matching just before
         seconds_curvature = sum(curvature(args.build, xyz, os.path.join(args.work, "timing")) for xyz in (xyz_a, xyz_b))
         print(f"{name:20} time: curvature of the two surfaces ({len(pa)} + {len(pb)} points) "
               f"{seconds_curvature:.1f} s, descriptors and matching ({len(pa)} + {len(pb)} points) {seconds:.1f} s")
+        rows.append(dict(sizes, method="curvature of the two surfaces", seconds=seconds_curvature))
 
         if not args.no_fpfh:
             start = time.time()
             fa, fb = fpfh(pa, na, 10.0), fpfh(pb, nb, 10.0)
             d = m.chi_square_distances(fa[centres], fb[candidates])
             top1, top10 = rates(d, true_places, pb[candidates])
-            print(f"{name:20} {'FPFH 10 A':20} {top1:5.3f}  {top10:5.3f}  {time.time() - start:7.1f}")
+            seconds = time.time() - start
+            print(f"{name:20} {'FPFH 10 A':20} {top1:5.3f}  {top10:5.3f}  {seconds:7.1f}")
+            rows.append(dict(sizes, method="FPFH 10 A", top1=top1, top10=top10, seconds=seconds))
             start = time.time()
             fa, fb = fpfh(pa, na, 3.0), fpfh(pb, nb, 3.0)
             da = ring_average(pa, fa, centres, RINGS)
             db = ring_average(pb, fb, candidates, RINGS)
             d = m.chi_square_distances(da, db)
             top1, top10 = rates(d, true_places, pb[candidates])
-            print(f"{name:20} {'FPFH rings':20} {top1:5.3f}  {top10:5.3f}  {time.time() - start:7.1f}")
+            seconds = time.time() - start
+            print(f"{name:20} {'FPFH rings':20} {top1:5.3f}  {top10:5.3f}  {seconds:7.1f}")
+            rows.append(dict(sizes, method="FPFH rings", top1=top1, top10=top10, seconds=seconds))
 
         if key == "hpv":
             # invariance: a rotated, translated copy of A against A
@@ -269,6 +368,12 @@ def main():
             d = m.histogram_distances(ra, rc)
             top1, top10 = rates(d, moved[centres], moved[rc.centers])
             print(f"{name:20} {'rotated copy of A':20} {top1:5.3f}  {top10:5.3f}")
+            rows.append(dict(sizes, method="rotated copy of A", top1=top1, top10=top10, points_b=len(moved)))
+
+    if args.timing_points > 0:
+        timing(args, m, rows)
+    write_csv(csv_path, rows)
+    print(f"results in {csv_path}")
 
 
 if __name__ == "__main__":

@@ -1,6 +1,9 @@
 """Shape descriptors of surface regions, and matching them from one surface to another.
 
-numpy only. Lengths are in the units of the points; curvatures in inverse units.
+The sampling, the descriptors, their distances and the registration are the
+C++ library's (region_descriptors.h, match_regions.h), run with the GIL
+released on the threads that ``threads`` allows; numpy in and out. Lengths
+are in the units of the points; curvatures in inverse units.
 
 - ``shape_index(k1, k2)`` and ``curvedness(k1, k2)``: Koenderink's per-point
   shape descriptors from the principal curvatures.
@@ -17,11 +20,11 @@ numpy only. Lengths are in the units of the points; curvatures in inverse units.
   onto A, and the candidates re-ranked by their agreement with it.
 """
 
-import concurrent.futures
 import math
-import os
 
 import numpy as np
+
+from . import _native
 
 __all__ = [
     "Matches",
@@ -80,35 +83,29 @@ def farthest_point_sample(points, n, first=0):
     starting from index ``first``: a spread-out sample, the same on every run. All the indices when
     n >= len(points)."""
     points = _points(points, "points")
-    count = len(points)
-    if n >= count:
-        return np.arange(count)
-    chosen = np.empty(n, dtype=np.int64)
-    chosen[0] = first
-    distance = np.sum((points - points[first]) ** 2, axis=1)
-    for i in range(1, n):
-        chosen[i] = int(np.argmax(distance))
-        np.minimum(distance, np.sum((points - points[chosen[i]]) ** 2, axis=1), out=distance)
-    return chosen
+    if int(n) != n or n < 0:
+        raise ValueError("farthest_point_sample: n must be an integer >= 0")
+    if not 0 <= first < max(len(points), 1):
+        raise ValueError("farthest_point_sample: first must be a point index")
+    return _native.farthest_point_sample(points, int(n), int(first))
 
 
-def _layer_values(layers):
-    """The (shape index, curvedness x radius) of every point at every layer: two (N, L) arrays."""
+def _layer_arrays(layers, count):
+    """The (k1, k2, radius) of every point at every layer: three (L, N) arrays."""
     if hasattr(layers, "layers") and hasattr(layers, "__getitem__") and not isinstance(layers, (list, tuple)):
         layers = [layers[name] for name in layers.layers]
     if isinstance(layers, dict) or hasattr(layers, "k1"):
         layers = [layers]
-    s, c = [], []
-    for layer in layers:
-        k1 = np.asarray(layer["k1"], dtype=np.float64)
-        k2 = np.asarray(layer["k2"], dtype=np.float64)
-        radius = np.asarray(layer["radius"], dtype=np.float64)
-        s.append(shape_index(k1, k2))
-        # curvedness without unit: times the fit's radius (about 1 on a sphere as large as the fit)
-        c.append(curvedness(k1, k2) * radius)
-    if not s:
+    if not layers:
         raise ValueError("region_descriptors: no curvature layer")
-    return np.column_stack(s), np.column_stack(c)
+    arrays = []
+    for key in ("k1", "k2", "radius"):
+        values = [np.asarray(layer[key], dtype=np.float64).ravel() for layer in layers]
+        for v in values:
+            if len(v) != count:
+                raise ValueError(f"region_descriptors: {count} points but {len(v)} values per layer")
+        arrays.append(np.ascontiguousarray(np.stack(values)))
+    return arrays
 
 
 class Regions:
@@ -219,17 +216,12 @@ def region_descriptors(points, layers, centers=None, *, normals=None, center_nor
         ``Regions``.
     """
     points = _points(points, "points")
-    s, c = _layer_values(layers)
-    if len(s) != len(points):
-        raise ValueError(f"region_descriptors: {len(points)} points but {len(s)} values per layer")
+    k1, k2, radius = _layer_arrays(layers, len(points))
     rings = np.asarray(rings, dtype=np.float64)
     if rings.ndim != 1 or len(rings) == 0 or not np.all(rings > 0) or np.any(np.diff(rings) <= 0):
         raise ValueError("region_descriptors: rings must be increasing radii > 0")
     if int(thinning) != thinning or thinning < 1 or not dense_radius > 0:
         raise ValueError("region_descriptors: thinning must be an integer >= 1 and dense_radius > 0")
-    thinning = int(thinning)
-    if shape_bins < 2 or curvedness_bins < 1 or geometry_bins < 2:
-        raise ValueError("region_descriptors: at least 2 shape index and geometry bins and 1 curvedness bin")
     if isinstance(ring_weights, str):
         if ring_weights not in ("radius", "equal"):
             raise ValueError("region_descriptors: ring_weights must be 'radius', 'equal' or one value per ring")
@@ -245,78 +237,25 @@ def region_descriptors(points, layers, centers=None, *, normals=None, center_nor
         centers = np.asarray(centers, dtype=np.int64)
         if centers.ndim != 1 or (len(centers) and (centers.min() < 0 or centers.max() >= len(points))):
             raise ValueError("region_descriptors: centers must be point indices")
+    centers = np.ascontiguousarray(centers, dtype=np.int64)
     if normals is not None:
-        normals = _unit(normals, "normals", len(points))
-        center_normals = normals if center_normals is None else _unit(center_normals, "center_normals",
-                                                                      len(points))
-    n_rings, n_layers = len(rings), s.shape[1]
-    per_layer = shape_bins + curvedness_bins
-    geometry = 0 if normals is None else 2 * geometry_bins
-    per_ring = n_layers * per_layer + geometry
-    width = n_rings * per_ring
-    defined = np.isfinite(s) & np.isfinite(c)
-    s0, sw0, s1, sw1 = _soft_bins(np.nan_to_num(s), -1.0, 1.0, shape_bins)
-    c0, cw0, c1, cw1 = _soft_bins(np.nan_to_num(c), 0.0, curvedness_range, curvedness_bins)
-    layer_offset = np.arange(n_layers) * per_layer
-    # per point and layer: the four (bin, weight) contributions within a ring's block
-    bins_of = np.concatenate([s0 + layer_offset, s1 + layer_offset, c0 + layer_offset + shape_bins,
-                              c1 + layer_offset + shape_bins], axis=1)
-    weights_of = np.concatenate([sw0, sw1, cw0, cw1], axis=1) * np.tile(defined, 4)
-    descriptors = np.zeros((len(centers), width))
-    squares = np.sum(points ** 2, axis=1)
-    outer2 = rings[-1] ** 2
-    dense2 = min(dense_radius, rings[-1]) ** 2 if thinning > 1 else outer2
-    kept = np.arange(0, len(points), thinning)  # the points that count beyond dense_radius
-    chunk = max(1, 1_000_000 // max(1, len(points)))
-    def describe(start):
-        block = centers[start:start + chunk]
-        d2 = squares[block][:, None] - 2 * points[block] @ points.T + squares[None, :]
-        row, near = np.nonzero(d2 <= dense2)
-        if thinning > 1 and dense2 < outer2:
-            far_row, far = np.nonzero((d2[:, kept] > dense2) & (d2[:, kept] <= outer2))
-            row, near = np.concatenate([row, far_row]), np.concatenate([near, kept[far]])
-        ring = np.searchsorted(rings ** 2, d2[row, near], side="left")  # d2 <= outer2: always a ring
-        base = (row * width + ring * per_ring)[:, None]
-        # np.take: faster than fancy indexing for whole rows
-        index = [(base + np.take(bins_of, near, axis=0)).ravel()]
-        values = [np.take(weights_of, near, axis=0).ravel()]
-        if normals is not None:
-            axis = center_normals[block][row]
-            cosine = np.einsum("ij,ij->i", normals[near], axis)
-            height = np.einsum("ij,ij->i", points[near] - points[block][row], axis) / rings[ring]
-            offset = base[:, 0] + n_layers * per_layer
-            for k, v in enumerate((cosine, height)):
-                i0, w0, i1, w1 = _soft_bins(v, -1.0, 1.0, geometry_bins)
-                index += [offset + k * geometry_bins + i0, offset + k * geometry_bins + i1]
-                values += [w0, w1]
-        descriptors[start:start + len(block)] = np.bincount(
-            np.concatenate(index), weights=np.concatenate(values), minlength=len(block) * width).reshape(-1, width)
-
-    _run(describe, range(0, len(centers), chunk), threads)
-    # each histogram normalised to sum 1
-    histogram_bins = np.tile([shape_bins, curvedness_bins] * n_layers + [geometry_bins] * (2 if geometry else 0),
-                             n_rings).astype(np.int64)
-    histogram_weights = np.repeat(ring_weights, len(histogram_bins) // n_rings)
-    histogram_kinds = np.tile(np.arange(len(histogram_bins) // n_rings), n_rings)
-    ends = np.cumsum(histogram_bins)
-    for first, end in zip(ends - histogram_bins, ends):
-        part = descriptors[:, first:end]
-        total = part.sum(axis=1, keepdims=True)
-        np.divide(part, total, out=part, where=total > 0)
+        normals = _points(normals, "normals")
+        center_normals = None if center_normals is None else _points(center_normals, "center_normals")
+    descriptors, histogram_bins, histogram_weights, histogram_kinds = _native.region_descriptors(
+        points, k1, k2, radius, centers, normals, center_normals, rings.tolist(), ring_weights.tolist(),
+        int(shape_bins), int(curvedness_bins), float(curvedness_range), int(geometry_bins), float(dense_radius),
+        int(thinning), _threads(threads))
     return Regions(points, centers, descriptors, rings, (shape_bins, curvedness_bins), histogram_bins,
                    histogram_weights, histogram_kinds)
 
 
-def _cumulative(regions):
-    """Rows whose L1 distances are ``histogram_distances``: each histogram's running sums, weighted."""
-    x = regions.descriptors
-    ends = np.cumsum(regions.histogram_bins)
-    out = np.empty_like(x)
-    scale = regions.histogram_weights / regions.histogram_bins / regions.histogram_weights.sum()
-    for first, end, w in zip(ends - regions.histogram_bins, ends, scale):
-        np.cumsum(x[:, first:end], axis=1, out=out[:, first:end])
-        out[:, first:end] *= w
-    return out
+def _threads(threads):
+    """The native functions' thread count: 0 for all the CPUs."""
+    if threads is None:
+        return 0
+    if int(threads) != threads or threads < 1:
+        raise ValueError("threads must be an integer >= 1, or None for all the CPUs")
+    return int(threads)
 
 
 def histogram_distances(a, b, threads=None, balance=True):
@@ -335,48 +274,7 @@ def histogram_distances(a, b, threads=None, balance=True):
     count for little); a distance of 1 is then a typical one. False: the weighted mean over all
     the histograms, in [0, 1].
     threads: how many threads share the rows (default: the CPUs)."""
-    if (a.descriptors.shape[1] != b.descriptors.shape[1] or a.rings != b.rings or a.bins != b.bins
-            or not np.array_equal(a.histogram_bins, b.histogram_bins)
-            or not np.array_equal(a.histogram_weights, b.histogram_weights)
-            or not np.array_equal(a.histogram_kinds, b.histogram_kinds)):
-        raise ValueError("histogram_distances: the regions were described with different layouts")
-    # float32 halves the memory traffic; the sums keep about 6 digits, far below the distances' spread
-    x, y = _cumulative(a).astype(np.float32), _cumulative(b).astype(np.float32)
-    if not balance:
-        return _l1(x, y, threads)
-    column_kind = np.repeat(a.histogram_kinds, a.histogram_bins)
-    kinds = np.unique(a.histogram_kinds)
-    out = np.zeros((len(x), len(y)))
-    for kind in kinds:
-        columns = np.nonzero(column_kind == kind)[0]
-        d = _l1(np.ascontiguousarray(x[:, columns]), np.ascontiguousarray(y[:, columns]), threads)
-        median = float(np.median(d))
-        out += d / median if median > 0 else d
-    return out / len(kinds)
-
-
-def _l1(x, y, threads):
-    """(len(x), len(y)) L1 distances between rows."""
-    out = np.empty((len(x), len(y)))
-    chunk = max(1, 2_000_000 // max(1, len(y) * x.shape[1]))
-
-    def rows(start):
-        out[start:start + chunk] = np.abs(x[start:start + chunk, None, :] - y[None, :, :]).sum(axis=2)
-
-    _run(rows, range(0, len(x), chunk), threads)
-    return out
-
-
-def _run(function, starts, threads):
-    """function(start) for every start, on ``threads`` threads (default: the CPUs): numpy lets go of
-    the GIL in its large operations, so threads share the work."""
-    threads = (os.cpu_count() or 1) if threads is None else threads
-    if threads > 1 and len(starts) > 1:
-        with concurrent.futures.ThreadPoolExecutor(max_workers=threads) as pool:
-            list(pool.map(function, starts))
-    else:
-        for start in starts:
-            function(start)
+    return _native.histogram_distances(a, b, bool(balance), _threads(threads))
 
 
 def chi_square_distances(a, b):
@@ -400,17 +298,10 @@ def chi_square_distances(a, b):
 def fit_rigid(source, target, weights=None):
     """The rotation R and translation t minimising sum w |R source + t - target|^2 (Kabsch, a proper
     rotation): (R (3, 3), t (3,))."""
-    source = np.asarray(source, dtype=np.float64)
-    target = np.asarray(target, dtype=np.float64)
-    w = np.ones(len(source)) if weights is None else np.asarray(weights, dtype=np.float64)
-    w = w / w.sum()
-    cs = w @ source
-    ct = w @ target
-    h = ((source - cs) * w[:, None]).T @ (target - ct)
-    u, _, vt = np.linalg.svd(h)
-    d = np.sign(np.linalg.det(vt.T @ u.T))
-    r = vt.T @ np.diag([1.0, 1.0, d]) @ u.T
-    return r, ct - r @ cs
+    source, target = _points(source, "source"), _points(target, "target")
+    if weights is not None:
+        weights = np.ascontiguousarray(weights, dtype=np.float64)
+    return _native.fit_rigid(source, target, weights)
 
 
 def register_correspondences(source, target, *, tolerance=3.0, iterations=2000, seed=0):
@@ -422,45 +313,8 @@ def register_correspondences(source, target, *, tolerance=3.0, iterations=2000, 
     squares on those pairs (twice). Returns (R, t, inliers), inliers a
     boolean array over the pairs.
     """
-    source = _points(source, "source")
-    target = _points(target, "target")
-    n = len(source)
-    if n < 3:
-        raise ValueError("register_correspondences: fewer than 3 pairs")
-    rng = np.random.default_rng(seed)
-    # all the triples at once: those of three distinct pairs, spread and of equal shapes on both sides
-    triples = rng.integers(0, n, size=(iterations, 3))
-    triples = triples[(triples[:, 0] != triples[:, 1]) & (triples[:, 0] != triples[:, 2])
-                      & (triples[:, 1] != triples[:, 2])]
-    s3, t3 = source[triples], target[triples]
-    ds = np.linalg.norm(s3[:, [0, 0, 1]] - s3[:, [1, 2, 2]], axis=2)
-    dt = np.linalg.norm(t3[:, [0, 0, 1]] - t3[:, [1, 2, 2]], axis=2)
-    keep = (np.max(np.abs(ds - dt), axis=1) <= tolerance) & (np.min(ds, axis=1) >= tolerance)
-    s3, t3 = s3[keep], t3[keep]
-    if len(s3):
-        # Kabsch on every triple
-        cs, ct = s3.mean(axis=1), t3.mean(axis=1)
-        h = np.einsum("kia,kib->kab", s3 - cs[:, None], t3 - ct[:, None])
-        u, _, vt = np.linalg.svd(h)
-        d = np.sign(np.linalg.det(np.einsum("kba,kcb->kac", vt, u)))
-        u[:, :, 2] *= d[:, None]
-        rotations = np.einsum("kba,kcb->kac", vt, u)
-        translations = ct - np.einsum("kab,kb->ka", rotations, cs)
-        counts = np.empty(len(s3), dtype=np.int64)
-        for start in range(0, len(s3), 256):
-            r, t = rotations[start:start + 256], translations[start:start + 256]
-            placed = np.einsum("kab,nb->kna", r, source) + t[:, None, :]
-            counts[start:start + 256] = np.sum(np.linalg.norm(placed - target, axis=2) < tolerance, axis=1)
-        best = int(np.argmax(counts))
-        r, t = rotations[best], translations[best]
-    else:
-        r, t = fit_rigid(source, target)
-    inliers = np.linalg.norm(source @ r.T + t - target, axis=1) < tolerance
-    for _ in range(2):
-        if inliers.sum() >= 3:
-            r, t = fit_rigid(source[inliers], target[inliers])
-            inliers = np.linalg.norm(source @ r.T + t - target, axis=1) < tolerance
-    return r, t, inliers
+    source, target = _points(source, "source"), _points(target, "target")
+    return _native.register_correspondences(source, target, float(tolerance), int(iterations), int(seed))
 
 
 class Matches:
@@ -515,20 +369,6 @@ def match_regions(a, b, *, top=10, pool=50, tolerance=3.0, iterations=2000, seed
     """
     if len(b) == 0 or len(a) == 0:
         raise ValueError("match_regions: no region")
-    try:
-        distances = histogram_distances(a, b, threads, balance)
-    except ValueError:
-        raise ValueError("match_regions: the regions were described with different layouts") from None
-    top = min(top, len(b))
-    pool = min(max(pool, top), len(b))
-    order = np.argsort(distances, axis=1, kind="stable")[:, :pool]
-    scores = np.take_along_axis(distances, order[:, :top], axis=1)
-    candidates = b.centers[order]
-    rotation, translation, inliers = register_correspondences(
-        b.points[candidates[:, 0]], a.points[a.centers], tolerance=tolerance, iterations=iterations, seed=seed) \
-        if len(a) >= 3 else (np.eye(3), np.zeros(3), np.zeros(len(a), dtype=bool))
-    # the registration's verdict on each candidate of the pool; a stable sort keeps the descriptors' order
-    placed = b.points[candidates] @ rotation.T + translation
-    agree = np.linalg.norm(placed - a.points[a.centers][:, None, :], axis=2) < tolerance
-    reranked = np.take_along_axis(candidates, np.argsort(~agree, axis=1, kind="stable"), axis=1)[:, :top]
-    return Matches(a.centers, candidates[:, :top], scores, rotation, translation, inliers, reranked)
+    candidates, scores, rotation, translation, inliers, reranked = _native.match_regions(
+        a, b, int(top), int(pool), float(tolerance), int(iterations), int(seed), _threads(threads), bool(balance))
+    return Matches(a.centers, candidates, scores, rotation, translation, inliers, reranked)

@@ -108,3 +108,24 @@ def test_crambin_matches_a_moved_copy():
     # B placed onto A: the inverse of the motion
     assert np.max(np.abs(matches.transform(moved) - points)) < 0.3
     assert (matches.scores[:, 1:] >= matches.scores[:, :-1]).all()
+
+
+def test_one_thread_or_all_give_the_same():
+    """The C++ descriptors, distances and matches run on TBB's threads with the serial results."""
+    from conftest import fibonacci_sphere
+    points, normals = fibonacci_sphere(4000, radius=15.0)
+    u = points / 15.0
+    layer = {"k1": 0.3 * np.sin(9 * u[:, 0] + 7 * u[:, 1]) + 0.05, "k2": 0.3 * np.cos(8 * u[:, 1] - 11 * u[:, 2]),
+             "radius": np.full(4000, 2.0)}
+    runs = []
+    for threads in (1, None):
+        a = cas.region_descriptors(points, layer, 200, normals=normals, threads=threads)
+        b = cas.region_descriptors(points, layer, cas.farthest_point_sample(points, 600, first=7), normals=normals,
+                                   threads=threads)
+        runs.append((a.descriptors, cas.match_regions(a, b, threads=threads)))
+    assert np.array_equal(runs[0][0], runs[1][0])
+    assert np.array_equal(runs[0][1].candidates, runs[1][1].candidates)
+    assert np.array_equal(runs[0][1].scores, runs[1][1].scores)
+    assert np.array_equal(runs[0][1].rotation, runs[1][1].rotation)
+    with pytest.raises(ValueError, match="threads"):
+        cas.region_descriptors(points, layer, 5, threads=0)

@@ -39,6 +39,20 @@ enum fit_center_key_map_t { fit_center_key_map };
 enum orient_each_point_t { orient_each_point };
 enum vertex_curvature_uncertainty_map_t { vertex_curvature_uncertainty_map };
 enum release_shape_t { release_shape };
+enum first_point_index_t { first_point_index };
+enum center_normal_map_t { center_normal_map };
+enum ring_radii_t { ring_radii };
+enum ring_weights_t { ring_weights };
+enum shape_index_bins_t { shape_index_bins };
+enum curvedness_bins_t { curvedness_bins };
+enum curvedness_range_t { curvedness_range };
+enum geometry_bins_t { geometry_bins };
+enum dense_radius_t { dense_radius };
+enum thinning_t { thinning };
+enum number_of_candidates_t { number_of_candidates };
+enum candidate_pool_t { candidate_pool };
+enum inlier_tolerance_t { inlier_tolerance };
+enum balance_kinds_t { balance_kinds };
 } // namespace internal_np_cas3
 
 namespace internal {
@@ -98,6 +112,20 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(fit_center_key_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(orient_each_point)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_curvature_uncertainty_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(release_shape)
+CGAL_CAS3_ADD_NAMED_PARAMETER(first_point_index)
+CGAL_CAS3_ADD_NAMED_PARAMETER(center_normal_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(ring_radii)
+CGAL_CAS3_ADD_NAMED_PARAMETER(ring_weights)
+CGAL_CAS3_ADD_NAMED_PARAMETER(shape_index_bins)
+CGAL_CAS3_ADD_NAMED_PARAMETER(curvedness_bins)
+CGAL_CAS3_ADD_NAMED_PARAMETER(curvedness_range)
+CGAL_CAS3_ADD_NAMED_PARAMETER(geometry_bins)
+CGAL_CAS3_ADD_NAMED_PARAMETER(dense_radius)
+CGAL_CAS3_ADD_NAMED_PARAMETER(thinning)
+CGAL_CAS3_ADD_NAMED_PARAMETER(number_of_candidates)
+CGAL_CAS3_ADD_NAMED_PARAMETER(candidate_pool)
+CGAL_CAS3_ADD_NAMED_PARAMETER(inlier_tolerance)
+CGAL_CAS3_ADD_NAMED_PARAMETER(balance_kinds)
 
 #undef CGAL_CAS3_ADD_NAMED_PARAMETER
 
