@@ -137,9 +137,11 @@ constexpr double large_radius_per_center_spacing = 7;
 
 // The growth of the fits' bias with the radius at one vertex, from the fits
 // at several radii: H(r) = H0 + c r^2 and K(r) = K0 + c_K r^2, fitted by
-// least squares weighted by the fits' inverse variances; the squares of the
-// rates are taken less their variances (a rate that is noise alone is not
-// a bias), as the automatic rule does (`choose_by_least_squared_error()`).
+// least squares weighted by the fits' inverse variances. The uncertainty
+// takes the fitted rate's square as it is: its expectation is the true
+// rate's square plus the fit's variance, the bias and how unsure the rate
+// is, both of which it must count (the automatic rule, which compares radii,
+// `choose_by_least_squared_error()`, takes the variance off).
 struct Bias_rates
 {
   double squared_H = 0, squared_K = 0;  // c^2 and c_K^2
@@ -179,7 +181,7 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
     if(!(line.determinant() > 1e-12 * line.w0 * line.w2))
       continue;
     const double c = line.slope();  // per (r / r_max)^2
-    const double squared = (std::max)(0., c * c - line.slope_variance()) / (r_max * r_max * r_max * r_max);
+    const double squared = c * c / (r_max * r_max * r_max * r_max);
     (which == 0 ? rates.squared_H : rates.squared_K) = squared;
   }
   return rates;
