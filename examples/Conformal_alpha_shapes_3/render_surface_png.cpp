@@ -3,7 +3,10 @@
 // PNG image, headless: a small software rasteriser with a z-buffer, Lambert
 // shading and 3x3 supersampling.
 //   render_surface_png SURFACE.ply IMAGE.png [--size N] [--view X,Y,Z] [--up X,Y,Z]
-//                      [--color-by PROPERTY]
+//                      [--color-by PROPERTY [--relative-to PROPERTY]]
+// With --relative-to, the color is the ratio |color-by| / |relative-to| on a
+// logarithmic ramp (blue 1%, white 10%, red 100%): an uncertainty such as
+// H_sigma_r4s relative to its value H_r4s.
 // The PNG is compressed with zlib, which libcgal-dev already depends on:
 // rendering adds no package (see the manual).
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -190,6 +193,20 @@ Image render(const Mesh& mesh, int size, const Vector& view, const Vector& up)
   return image;
 }
 
+// A vertex property's values by vertex index: PLY floats and doubles read
+// back as float or double properties.
+std::vector<double> vertex_values(const Mesh& mesh, const std::string& name, const char* file)
+{
+  std::vector<double> out(mesh.number_of_vertices());
+  auto as_float = mesh.property_map<Mesh::Vertex_index, float>("v:" + name);
+  auto as_double = mesh.property_map<Mesh::Vertex_index, double>("v:" + name);
+  if(!as_float.second && !as_double.second)
+    throw std::invalid_argument(std::string(file) + " has no vertex property " + name);
+  for(auto v : mesh.vertices())
+    out[v.idx()] = as_float.second ? double(as_float.first[v]) : as_double.first[v];
+  return out;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -197,14 +214,14 @@ int main(int argc, char* argv[])
   if(argc < 3)
   {
     std::cerr << "usage: render_surface_png SURFACE.ply IMAGE.png [--size N] [--view X,Y,Z] [--up X,Y,Z]"
-                 " [--color-by PROPERTY]\n";
+                 " [--color-by PROPERTY [--relative-to PROPERTY]]\n";
     return EXIT_FAILURE;
   }
   try
   {
     int size = 480;
     Vector view(0, 0, 1), up(0, 1, 0);  // the Stanford bunny's front
-    std::string color_by;
+    std::string color_by, relative_to;
     for(int i = 3; i + 1 < argc; i += 2)
     {
       const std::string option = argv[i];
@@ -212,24 +229,33 @@ int main(int argc, char* argv[])
       else if(option == "--view") view = parse_vector(argv[i + 1]);
       else if(option == "--up") up = parse_vector(argv[i + 1]);
       else if(option == "--color-by") color_by = argv[i + 1];
+      else if(option == "--relative-to") relative_to = argv[i + 1];
       else throw std::invalid_argument("unknown option " + option);
     }
     Mesh mesh;
     std::ifstream in(argv[1], std::ios::binary);
     if(!in || !CGAL::IO::read_PLY(in, mesh) || mesh.number_of_faces() == 0)
       throw std::invalid_argument(std::string("cannot read a surface from ") + argv[1]);
+    if(!relative_to.empty() && color_by.empty())
+      throw std::invalid_argument("--relative-to needs --color-by");
     if(!color_by.empty())
     {
-      // PLY floats and doubles read back as float or double properties
       auto color = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-      auto as_float = mesh.property_map<Mesh::Vertex_index, float>("v:" + color_by);
-      auto as_double = mesh.property_map<Mesh::Vertex_index, double>("v:" + color_by);
-      if(as_float.second)
-        cas3::color_by_curvature(mesh, as_float.first, color);
-      else if(as_double.second)
-        cas3::color_by_curvature(mesh, as_double.first, color);
+      const std::vector<double> value = vertex_values(mesh, color_by, argv[1]);
+      auto shown = mesh.add_property_map<Mesh::Vertex_index, double>("v:cas3_shown").first;
+      if(relative_to.empty())
+      {
+        for(auto v : mesh.vertices())
+          shown[v] = value[v.idx()];
+        cas3::color_by_curvature(mesh, shown, color);
+      }
       else
-        throw std::invalid_argument(std::string(argv[1]) + " has no vertex property " + color_by);
+      {
+        const std::vector<double> base = vertex_values(mesh, relative_to, argv[1]);
+        for(auto v : mesh.vertices())
+          shown[v] = std::abs(value[v.idx()]) / std::abs(base[v.idx()]);
+        cas3::color_by_ratio(mesh, shown, color);
+      }
     }
     if(!write_png(argv[2], render(mesh, size, view, up)))
       throw std::invalid_argument(std::string("cannot write ") + argv[2]);

@@ -314,6 +314,11 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamType{`double`}
     \cgalParamDefault{0: measured at each vertex from the fits}
   \cgalParamNEnd
+  \cgalParamNBegin{smoothing_radius}
+    \cgalParamDescription{the radius, in the units of the points, over which the points were smoothed before the mesh was made (`Denoising_plan::smoothing_radius_in_spacings()` times the spacing after `denoise()`): in the uncertainties, a fit smaller than that sees `noise_level` as a smooth field, and counts it as `(r / smoothing_radius)^2` of itself at radius `r`}
+    \cgalParamType{`double`}
+    \cgalParamDefault{0: the points were not smoothed}
+  \cgalParamNEnd
   \cgalParamNBegin{fit_center_key_map}
     \cgalParamDescription{the keys of the vertices in whose increasing order the large radii's centers are chosen (ties by position); the same keys for the same vertices of two meshes give the same centers where the meshes agree}
     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::uint64_t` as value}
@@ -350,9 +355,11 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
   const std::vector<internal::Vec3> normals = internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index);
   const double noise =
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::noise_level), 0.);
+  const double smoothing =
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::smoothing_radius), 0.);
   std::vector<internal::Vertex_estimate> estimates(graph.size());
   internal::estimate_at_every_vertex<ConcurrencyTag>(
-    graph, normals, rules, estimator, noise, 0, internal::fit_center_keys(pmesh, vertex_index, graph, np),
+    graph, normals, rules, estimator, noise, 0, smoothing, internal::fit_center_keys(pmesh, vertex_index, graph, np),
     [&](std::size_t, std::size_t v, const internal::Vertex_estimate& e) { estimates[v] = e; });
   std::size_t undefined = 0;
   for(vertex_descriptor v : vertices(pmesh))
@@ -374,7 +381,7 @@ spacings (`Neighborhood::spacings()`, and the candidates of
 `Neighborhood::automatic()`) are multiples of `sample_spacing`.
 
 \cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map, vertex_index_map, estimator, noise_level}
+  \cgalParamNBegin{vertex_point_map, vertex_index_map, estimator, noise_level, smoothing_radius}
     \cgalParamDescription{as above}
   \cgalParamNEnd
   \cgalParamNBegin{sample_spacing}
@@ -418,6 +425,7 @@ estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborh
   internal::estimate_at_every_vertex<ConcurrencyTag>(
     graph, internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index), rules, estimator,
     choose_parameter(get_parameter(np, internal_np_cas3::noise_level), 0.), spacing,
+    choose_parameter(get_parameter(np, internal_np_cas3::smoothing_radius), 0.),
     internal::fit_center_keys(pmesh, vertex_index, graph, np),
     [&](std::size_t r, std::size_t v, const internal::Vertex_estimate& e) {
       curvatures[r][v] = internal::to_vertex_curvature<GT>(e);
@@ -454,7 +462,7 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   std::vector<internal::Vec3> normals(graph.size());
   for(std::size_t i = 0; i < graph.size(); ++i)
     normals[i] = internal::chen_wu_normal(by_index[i], pmesh, vpm);
-  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, 0, nullptr);
+  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, 0, 0, nullptr);
   internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
   internal::Vertex_estimate estimate;
   estimation.estimate(0, workspace, &estimate);

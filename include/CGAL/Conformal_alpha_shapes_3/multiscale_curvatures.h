@@ -353,7 +353,8 @@ private:
       values = estimate_vertex_curvatures<CGAL::Parallel_if_available_tag>(
         surface, in_working_frame,
         parameters::sample_spacing(m_noise.spacing, parameters::noise_level(m_noise.noise * m_noise.spacing,
-          parameters::estimator(estimator).vertex_point_map(working))));
+          parameters::smoothing_radius(m_denoising.smoothing_radius_in_spacings() * m_noise.spacing,
+          parameters::estimator(estimator).vertex_point_map(working)))));
       return values;
     };
     std::vector<Point_curvature<Kernel> > layer;

@@ -65,8 +65,6 @@ struct Weighted_line_fit
   double determinant() const { return w0 * w2 - w1 * w1; }
   double intercept() const { return (y0 * w2 - y1 * w1) / determinant(); }
   double slope() const { return (w0 * y1 - w1 * y0) / determinant(); }
-  // with weights the inverse variances of the y
-  double slope_variance() const { return w0 / determinant(); }
 };
 
 // The noise of the heights around the vertex from the fits' residual

@@ -137,9 +137,11 @@ constexpr double large_radius_per_center_spacing = 7;
 
 // The growth of the fits' bias with the radius at one vertex, from the fits
 // at several radii: H(r) = H0 + c r^2 and K(r) = K0 + c_K r^2, fitted by
-// least squares weighted by the fits' inverse variances; the squares of the
-// rates are taken less their variances (a rate that is noise alone is not
-// a bias), as the automatic rule does (`choose_by_least_squared_error()`).
+// least squares weighted by the fits' inverse variances. The uncertainty
+// takes the fitted rate's square as it is: its expectation is the true
+// rate's square plus the fit's variance, the bias and how unsure the rate
+// is, both of which it must count (the automatic rule, which compares radii,
+// `choose_by_least_squared_error()`, takes the variance off).
 struct Bias_rates
 {
   double squared_H = 0, squared_K = 0;  // c^2 and c_K^2
@@ -151,14 +153,6 @@ inline double fit_noise(const Quadric_fit_error& e, double sample_noise)
 {
   return std::sqrt(sample_noise * sample_noise + e.noise * e.noise);
 }
-
-// Below this many sample spacings, the curvature's error due to the
-// sample's noise grows more slowly than independent noise would make it
-// (as 1 / r^2 rather than 1 / r^3): the pipeline's jets smooth the noisy
-// points over a few spacings, and a fit smaller than that sees a smooth
-// field. Measured on analytic surfaces under noise (the manual, section
-// "Uncertainty").
-constexpr double smoothed_noise_reach_in_spacings = 5.5;
 
 // A fit's curvature and radius for bias_rates().
 struct Radius_sample
@@ -187,16 +181,18 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
     if(!(line.determinant() > 1e-12 * line.w0 * line.w2))
       continue;
     const double c = line.slope();  // per (r / r_max)^2
-    const double squared = (std::max)(0., c * c - line.slope_variance()) / (r_max * r_max * r_max * r_max);
+    const double squared = c * c / (r_max * r_max * r_max * r_max);
     (which == 0 ? rates.squared_H : rates.squared_K) = squared;
   }
   return rates;
 }
 
 // The uncertainty of a fit at radius `radius` whose bias grows at `rates`,
-// the noise's and the bias's added in quadrature; the sample's noise counts
-// at radii below `smoothed_reach` (0: none) as
-// smoothed_noise_reach_in_spacings says.
+// the noise's and the bias's added in quadrature. Below `smoothed_reach`,
+// the radius over which the points were smoothed (0: not smoothed), the
+// sample's noise counts as (radius / smoothed_reach)^2 of itself: a fit
+// smaller than the smoothing sees a smooth field, whose curvature error
+// grows as 1 / r^2 rather than independent noise's 1 / r^3.
 inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, const Bias_rates& rates,
                                             double sample_noise, double smoothed_reach = 0)
 {
@@ -210,6 +206,39 @@ inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double r
   u.H = std::sqrt(se_H * se_H + rates.squared_H * r4);
   u.K = std::sqrt(se_K * se_K + rates.squared_K * r4);
   u.normal = noise * e.per_noise_normal;
+  return u;
+}
+
+// The uncertainty of an automatic rule's choice `chosen` among `candidates`:
+// the fit's, and in quadrature half the mean square change of the values to
+// the adjacent candidates (a radius chosen for its least estimated error is
+// where the estimate of that error is most often too small; the change from
+// one candidate to the next is what a slightly different choice would give,
+// and its variance is twice that of either estimate).
+inline Estimate_uncertainty choice_uncertainty(const std::vector<Candidate_fit>& candidates,
+                                               const Candidate_fit& chosen, Estimate_uncertainty u)
+{
+  const std::size_t i = std::size_t(&chosen - candidates.data());
+  double dH = 0, dK = 0;
+  int count = 0;
+  for(std::size_t j : {i - 1, i + 1})
+  {
+    if(j >= candidates.size())  // i - 1 wraps around at the first
+      continue;
+    const Local_curvature& a = chosen.curvature;
+    const Local_curvature& b = candidates[j].curvature;
+    const double h = (a.k1 + a.k2 - b.k1 - b.k2) / 2, k = a.k1 * a.k2 - b.k1 * b.k2;
+    if(!std::isfinite(h) || !std::isfinite(k))
+      continue;
+    dH += h * h;
+    dK += k * k;
+    ++count;
+  }
+  if(count > 0)
+  {
+    u.H = std::sqrt(u.H * u.H + dH / (2 * count));
+    u.K = std::sqrt(u.K * u.K + dK / (2 * count));
+  }
   return u;
 }
 
@@ -254,12 +283,13 @@ public:
   // by vertex, the keys that order the choice of the centers (Fit_centers).
   // Without keys every radius is fitted at every vertex (the estimate at
   // one vertex, whose graph is only what its search reaches).
-  // `sample_spacing`: 0 where unknown.
+  // `sample_spacing`: 0 where unknown; `smoothed_reach`: see fit_uncertainty().
   Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                        const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                       double sample_noise, double sample_spacing, const std::vector<std::uint64_t>* center_keys)
+                       double sample_noise, double sample_spacing, double smoothed_reach,
+                       const std::vector<std::uint64_t>* center_keys)
     : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator), m_sample_noise(sample_noise),
-      m_smoothed_reach(sample_spacing > 0 ? smoothed_noise_reach_in_spacings * sample_spacing : 0.)
+      m_smoothed_reach(smoothed_reach)
   {
     for(const Neighborhood_rule& rule : rules)
     {
@@ -600,7 +630,8 @@ private:
         {
           const Candidate_fit& chosen = choose_by_least_squared_error(ws.candidates, m_sample_noise);
           out[r] = Vertex_estimate{chosen.curvature, chosen.radius,
-                                   fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothed_reach)};
+                                   choice_uncertainty(ws.candidates, chosen,
+                                     fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothed_reach))};
         }
       }
       else if(rule.radius > 0)
@@ -671,7 +702,7 @@ private:
   std::vector<Neighborhood_rule> m_rules;
   Curvature_estimator m_estimator;
   double m_sample_noise;           // of the points before any denoising, model units; 0 when unknown
-  double m_smoothed_reach;         // see fit_uncertainty(); 0 when the spacing is unknown
+  double m_smoothed_reach;         // see fit_uncertainty(); 0 when not smoothed
   std::vector<double> m_radii;     // every rule's radii, increasing
   std::vector<char> m_with_error;  // by radius: whether its fits compute their error
   std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
@@ -693,10 +724,11 @@ private:
 template <typename ConcurrencyTag, typename Write>
 void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                           const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                          double sample_noise, double sample_spacing,
+                          double sample_noise, double sample_spacing, double smoothed_reach,
                           const std::vector<std::uint64_t>& center_keys, Write write)
 {
-  Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, &center_keys);
+  Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, smoothed_reach,
+                                  &center_keys);
   typedef Curvature_estimation::Workspace Workspace;
   struct Per_thread
   {
@@ -723,7 +755,7 @@ void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& no
 template <typename ConcurrencyTag, typename Write>
 void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                               const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                              double sample_noise, double sample_spacing,
+                              double sample_noise, double sample_spacing, double smoothed_reach,
                               const std::vector<std::uint64_t>& center_keys, Write write)
 {
   std::vector<double> candidates;
@@ -744,7 +776,7 @@ void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>
     for(std::size_t r : *pass)
       pass_rules.push_back(rules[r]);
     estimate_in_one_pass<ConcurrencyTag>(graph, normals, pass_rules, estimator, sample_noise, sample_spacing,
-                                         center_keys, [&](std::size_t k, std::size_t v, const Vertex_estimate& e) {
+                                         smoothed_reach, center_keys, [&](std::size_t k, std::size_t v, const Vertex_estimate& e) {
                                            write((*pass)[k], v, e);
                                          });
   }
