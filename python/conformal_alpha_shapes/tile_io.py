@@ -400,8 +400,9 @@ def merge_parts(path, part_paths, layers, descriptions, count):
 def merge_parts_las(path, merged_ply, layers, cloud):
     """``path``: the merged ``curvatures.ply`` (``merged_ply``, in input
     order) as LAS 1.4, a chunk at a time: the LAS input's records (its
-    scaled integers and fields), else the points at a power-of-ten scale;
-    the layers' values as named extra bytes (as ``Result.write_las``)."""
+    scaled integers, fields and extra bytes) and CRS records, else the
+    points at a power-of-ten scale; the layers' values as named extra bytes
+    (as ``Result.write_las``)."""
     from . import _native
     records = np.memmap(merged_ply, dtype=part_dtype(layers, with_index=False), mode="r",
                         offset=len(part_header(merged_ply)))
@@ -435,7 +436,7 @@ def merge_parts_las(path, merged_ply, layers, cloud):
 
     def write(temporary):
         nonlocal low, high, by_return
-        header_size = len(_native.las_header(info, list(layers), 0, [0] * 3, [0] * 3, [0] * 15))
+        header_size = len(_native.las_header(info, list(layers), 0, [0] * 3, [0] * 3, [0] * 15)[0])
         with open(temporary, "wb") as f:
             f.write(b"\0" * header_size)
             written = 0
@@ -453,9 +454,11 @@ def merge_parts_las(path, merged_ply, layers, cloud):
             if written != count:
                 raise InputError(f"{cloud.path}: the input changed during the run ({written} points, "
                                  f"the parts hold {count})")
+            header, evlrs = _native.las_header(info, list(layers), count, [int(x) for x in low],
+                                               [int(x) for x in high], [int(x) for x in by_return])
+            f.write(evlrs)
             f.seek(0)
-            f.write(_native.las_header(info, list(layers), count, [int(x) for x in low], [int(x) for x in high],
-                                       [int(x) for x in by_return]))
+            f.write(header)
     atomic_write(path, write)
 
 
