@@ -919,10 +919,11 @@ py::dict read_point_cloud(const std::string& path, const std::vector<std::string
 }
 
 // The records first to first + count - 1 of the LAS file `path` that the
-// filters keep, read without the rest: a dict of points, fields, counts
-// (of this range) and las (the header).
+// filters keep, read without the rest: a dict of points, fields (with
+// `with_fields`, else None), counts (of this range) and las (the header).
 py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint64_t count,
-                        const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns)
+                        const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns,
+                        bool with_fields)
 {
   const cas3::Las_filter filter = las_filter_of(classes, drop_withheld, returns);
   const std::vector<bool> class_kept = cas3::las_classes_kept(filter);
@@ -947,6 +948,8 @@ py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint6
         if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
           throw cas3::Read_error(path + ": point " + std::to_string(first + i) + ": coordinate is NaN or infinite");
         points.emplace_back(p[0], p[1], p[2]);
+        if(!with_fields)
+          continue;
         kept.push_back(records[i]);
         kept_extra.insert(kept_extra.end(), extra.begin() + std::ptrdiff_t(i * stride),
                           extra.begin() + std::ptrdiff_t((i + 1) * stride));
@@ -956,7 +959,7 @@ py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint6
   }
   py::dict d;
   d["points"] = points_array(points);
-  d["fields"] = las_fields_dict(kept, kept_extra, header.extra_bytes);
+  d["fields"] = with_fields ? py::object(las_fields_dict(kept, kept_extra, header.extra_bytes)) : py::object(py::none());
   d["counts"] = counts_dict(counts);
   d["las"] = las_header_dict(header);
   return d;
@@ -1425,7 +1428,7 @@ PYBIND11_MODULE(_native, m)
   m.def("read_point_cloud", &read_point_cloud, py::arg("path"), py::arg("classes"), py::arg("drop_withheld"),
         py::arg("returns"));
   m.def("read_las_chunk", &read_las_chunk, py::arg("path"), py::arg("first"), py::arg("count"), py::arg("classes"),
-        py::arg("drop_withheld"), py::arg("returns"));
+        py::arg("drop_withheld"), py::arg("returns"), py::arg("with_fields"));
   m.def("las_scale", &las_scale);
   m.def("las_records", &las_records, py::arg("points"), py::arg("outlier"), py::arg("layers"), py::arg("fields"),
         py::arg("info"));

@@ -530,6 +530,7 @@ def test_a_las_input_is_read_in_chunks_and_gives_the_answer_of_its_points_as_ply
         return native_read(path, first, count, *rest)
     monkeypatch.setattr(_native, "read_las_chunk", recording)
     monkeypatch.setattr(tile_io, "LAS_CHUNK", 4096)
+    monkeypatch.setattr(tile_io, "LAS_RECORDS_MADE", 1000)
     options = dict(tile_points=6_000, client=client, merge=True, quiet=True, radii=("auto", "4s"))
     summary = tiles.process_tiles(las_path, tmp_path / "out_las", classes=[2], las=True, **options)
     assert max(requested) <= 4096 and len(requested) > 3 * len(everything) // 4096
