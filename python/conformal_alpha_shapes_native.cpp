@@ -959,7 +959,8 @@ py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint6
   }
   py::dict d;
   d["points"] = points_array(points);
-  d["fields"] = with_fields ? py::object(las_fields_dict(kept, kept_extra, header.extra_bytes)) : py::object(py::none());
+  d["fields"] = with_fields ? py::object(las_fields_dict(kept, kept_extra, header.extra_bytes))
+                            : py::object(py::none());
   d["counts"] = counts_dict(counts);
   d["las"] = las_header_dict(header);
   return d;

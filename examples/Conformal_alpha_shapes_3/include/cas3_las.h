@@ -588,7 +588,8 @@ private:
                         "ends at " + std::to_string(points_end) + ")");
       for(std::uint32_t k = 0; k < h.number_of_evlrs; ++k)
       {
-        const std::string where = m_name + ": EVLR " + std::to_string(k + 1) + " of " + std::to_string(h.number_of_evlrs);
+        const std::string where
+          = m_name + ": EVLR " + std::to_string(k + 1) + " of " + std::to_string(h.number_of_evlrs);
         if(at > h.file_size || h.file_size - at < 60)
           throw Las_error(where + " is beyond the end of the file (" + std::to_string(h.file_size) + " bytes)");
         const std::string head = bytes_at(at, 60);
