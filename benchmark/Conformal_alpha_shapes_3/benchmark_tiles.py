@@ -22,7 +22,8 @@ the noise, so the denoising and the front; the tiled run's difference in
 `a` is read against that spread. With --las instead, the scene's points at 1e-7
 steps as LAS 1.4 (point format 6, an extra-bytes field, a WKT CRS) and as
 binary PLY, a tiled run on each (--merge, --las for the LAS): each driver's
-peak memory (its own, not its workers'), and whether the merged files hold
+peak memory (its own, not its workers': the peak RSS, and the anonymous
+memory sampled every 50 ms), and whether the merged files hold
 the same values and the LAS the input's records and extra bytes.
 """
 import argparse
@@ -118,12 +119,29 @@ def las_against_ply(cloud, folder, args):
     out = {}
     for kind, path in paths.items():
         start = time.perf_counter()
-        run = subprocess.run([sys.executable, "-c", DRIVER, path, "--output", os.path.join(folder, f"tiled_{kind}"),
-                              "--tile-points", str(args.tile_points), "--workers", str(args.workers), "--merge",
-                              "--quiet"] + (["--las"] if kind == "las" else []),
-                             check=True, capture_output=True, text=True)
-        out[kind] = {"wall": time.perf_counter() - start, "driver_peak_memory": int(run.stderr.split()[-1]),
-                     "input_bytes": os.path.getsize(path)}
+        log = open(os.path.join(folder, f"tiled_{kind}.log"), "w+")
+        run = subprocess.Popen([sys.executable, "-c", DRIVER, path, "--output", os.path.join(folder, f"tiled_{kind}"),
+                                "--tile-points", str(args.tile_points), "--workers", str(args.workers), "--merge",
+                                "--quiet"] + (["--las"] if kind == "las" else []), stderr=log)
+        # the peak RSS counts the pages of the memory-mapped files it writes
+        # (the merged file), which the kernel may drop: the anonymous memory
+        # (RssAnon) is sampled too
+        anonymous = 0
+        while run.poll() is None:
+            try:
+                with open(f"/proc/{run.pid}/status") as f:
+                    anonymous = max([anonymous] + [int(line.split()[1]) * 1024 for line in f
+                                                   if line.startswith("RssAnon:")])
+            except OSError:
+                pass
+            time.sleep(0.05)
+        log.seek(0)
+        stderr = log.read()
+        log.close()
+        if run.returncode:
+            raise RuntimeError(f"the tiled run on {path} failed: {stderr}")
+        out[kind] = {"wall": time.perf_counter() - start, "driver_peak_rss": int(stderr.split()[-1]),
+                     "driver_peak_anonymous_sampled": anonymous, "input_bytes": os.path.getsize(path)}
     names = tile_io.read_manifest(os.path.join(folder, "tiled_ply", "manifest.json"))["names"]
     merged_path = os.path.join(folder, "tiled_ply", "curvatures.ply")
     merged = np.memmap(merged_path, dtype=tile_io.part_dtype(names, False), mode="r",
