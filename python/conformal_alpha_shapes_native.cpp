@@ -658,10 +658,16 @@ void write_point_cloud(const std::string& path, const Doubles& points_array, con
 
 // ---- LAS: the records' fields as numpy arrays, and back
 
-// The fields of `records` as a dict of (N,) arrays.
-py::dict las_fields_dict(const std::vector<cas3::Las_record>& records)
+// The fields of `records` as a dict of (N,) arrays, and their extra bytes
+// (`stride` per record in `extra`) as extra_bytes, an (N, stride) array of
+// uint8.
+py::dict las_fields_dict(const std::vector<cas3::Las_record>& records, const std::vector<char>& extra,
+                         std::size_t stride)
 {
   const std::size_t n = records.size();
+  py::array_t<std::uint8_t> extra_bytes(std::vector<py::ssize_t>{py::ssize_t(n), py::ssize_t(stride)});
+  if(n * stride > 0)
+    std::memcpy(extra_bytes.mutable_data(), extra.data(), n * stride);
   auto X = new_array<std::int32_t>(n), Y = new_array<std::int32_t>(n), Z = new_array<std::int32_t>(n);
   auto intensity = new_array<std::uint16_t>(n), point_source_id = new_array<std::uint16_t>(n);
   auto return_number = new_array<std::uint8_t>(n), number_of_returns = new_array<std::uint8_t>(n);
@@ -719,6 +725,7 @@ py::dict las_fields_dict(const std::vector<cas3::Las_record>& records)
   d["point_source_id"] = point_source_id;
   d["gps_time"] = gps_time;
   d["red"] = red; d["green"] = green; d["blue"] = blue; d["nir"] = nir;
+  d["extra_bytes"] = extra_bytes;
   return d;
 }
 
@@ -754,7 +761,7 @@ std::vector<cas3::Las_record> las_records_of(const py::dict& fields, std::size_t
   auto point_source_id = field<std::uint16_t>(fields, "point_source_id", n);
   auto gps_time = field<double>(fields, "gps_time", n);
   auto red = field<std::uint16_t>(fields, "red", n), green = field<std::uint16_t>(fields, "green", n),
-       blue = field<std::uint16_t>(fields, "blue", n);
+       blue = field<std::uint16_t>(fields, "blue", n), nir = field<std::uint16_t>(fields, "nir", n);
   for(std::size_t i = 0; i < n; ++i)
   {
     cas3::Las_record& r = records[i];
@@ -777,8 +784,22 @@ std::vector<cas3::Las_record> las_records_of(const py::dict& fields, std::size_t
     r.red = red.data()[i];
     r.green = green.data()[i];
     r.blue = blue.data()[i];
+    r.nir = nir.data()[i];
   }
   return records;
+}
+
+// The extra bytes of las_fields_dict(), `stride` per record, for `n` records.
+std::vector<char> las_extra_bytes_of(const py::dict& fields, std::size_t n, std::size_t stride)
+{
+  if(!fields.contains("extra_bytes"))
+    throw py::value_error("write_las: the LAS fields have no 'extra_bytes'");
+  auto a = fields["extra_bytes"].cast<py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> >();
+  if(a.ndim() != 2 || std::size_t(a.shape(0)) != n || std::size_t(a.shape(1)) != stride)
+    throw py::value_error("write_las: the LAS field 'extra_bytes' is not " + std::to_string(stride)
+                          + " bytes per point, as the input's header says");
+  const char* p = reinterpret_cast<const char*>(a.data());
+  return std::vector<char>(p, p + n * stride);
 }
 
 cas3::Las_filter las_filter_of(const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns)
@@ -794,6 +815,16 @@ cas3::Las_filter las_filter_of(const std::vector<std::string>& classes, bool dro
   return filter;
 }
 
+// A text field of a LAS file as a str, a character per byte (Latin-1), and back.
+py::object text_of(const std::string& bytes)
+{
+  return py::bytes(bytes).attr("decode")("latin-1");
+}
+std::string bytes_of_text(const py::handle& text)
+{
+  return text.attr("encode")("latin-1").cast<std::string>();
+}
+
 py::dict las_header_dict(const cas3::Las_header& h)
 {
   py::dict d;
@@ -807,6 +838,31 @@ py::dict las_header_dict(const cas3::Las_header& h)
   d["global_encoding"] = h.global_encoding;
   d["creation_day"] = h.creation_day;
   d["creation_year"] = h.creation_year;
+  d["nir"] = cas3::las_detail::has_nir(h.point_format);
+  d["extra_bytes_length"] = h.extra_bytes;
+  py::list extra;
+  for(const cas3::Las_extra_bytes_field& f : h.extra_fields)
+  {
+    py::dict e;
+    e["name"] = text_of(f.name);
+    e["data_type"] = int(std::uint8_t(f.descriptor[2]));
+    e["offset"] = f.offset;
+    e["size"] = f.size;
+    e["descriptor"] = py::bytes(f.descriptor);
+    extra.append(e);
+  }
+  d["extra_bytes"] = extra;
+  py::list crs;
+  for(const cas3::Las_vlr& v : h.crs)
+  {
+    py::dict r;
+    r["user_id"] = text_of(v.user_id);
+    r["record_id"] = v.record_id;
+    r["description"] = text_of(v.description);
+    r["data"] = py::bytes(v.data);
+    crs.append(r);
+  }
+  d["crs"] = crs;
   return d;
 }
 
@@ -857,7 +913,7 @@ py::dict read_point_cloud(const std::string& path, const std::vector<std::string
   if(cloud.las.present)
   {
     d["las"] = las_header_dict(cloud.las.header);
-    d["fields"] = las_fields_dict(cloud.las.records);
+    d["fields"] = las_fields_dict(cloud.las.records, cloud.las.extra_bytes, cloud.las.header.extra_bytes);
     d["counts"] = counts_dict(cloud.las.counts);
     d["summary"] = cas3::las_input_summary(path, cloud.las.header, filter, cloud.las.counts);
   }
@@ -865,15 +921,17 @@ py::dict read_point_cloud(const std::string& path, const std::vector<std::string
 }
 
 // The records first to first + count - 1 of the LAS file `path` that the
-// filters keep, read without the rest: a dict of points, fields, counts
-// (of this range) and las (the header).
+// filters keep, read without the rest: a dict of points, fields (with
+// `with_fields`, else None), counts (of this range) and las (the header).
 py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint64_t count,
-                        const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns)
+                        const std::vector<std::string>& classes, bool drop_withheld, const std::string& returns,
+                        bool with_fields)
 {
   const cas3::Las_filter filter = las_filter_of(classes, drop_withheld, returns);
   const std::vector<bool> class_kept = cas3::las_classes_kept(filter);
   cas3::Las_filter_counts counts;
   std::vector<cas3::Las_record> records, kept;
+  std::vector<char> extra, kept_extra;
   std::vector<Point> points;
   cas3::Las_header header;
   {
@@ -882,7 +940,8 @@ py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint6
     {
       cas3::Las_file file(path);
       header = file.header();
-      file.read(first, count, records);
+      file.read(first, count, records, &extra);
+      const std::size_t stride = header.extra_bytes;
       for(std::size_t i = 0; i < records.size(); ++i)
       {
         if(!cas3::keep_las_record(records[i], filter, class_kept, counts))
@@ -891,25 +950,33 @@ py::dict read_las_chunk(const std::string& path, std::uint64_t first, std::uint6
         if(!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
           throw cas3::Read_error(path + ": point " + std::to_string(first + i) + ": coordinate is NaN or infinite");
         points.emplace_back(p[0], p[1], p[2]);
+        if(!with_fields)
+          continue;
         kept.push_back(records[i]);
+        kept_extra.insert(kept_extra.end(), extra.begin() + std::ptrdiff_t(i * stride),
+                          extra.begin() + std::ptrdiff_t((i + 1) * stride));
       }
     }
     catch(const cas3::Read_error& e) { throw std::invalid_argument(e.what()); }
   }
   py::dict d;
   d["points"] = points_array(points);
-  d["fields"] = las_fields_dict(kept);
+  d["fields"] = with_fields ? py::object(las_fields_dict(kept, kept_extra, header.extra_bytes))
+                            : py::object(py::none());
   d["counts"] = counts_dict(counts);
   d["las"] = las_header_dict(header);
   return d;
 }
 
 // What write_las and the tiles' LAS writer share: the output header of
-// `info` (scale, offset, rgb and, from a LAS input, file_source_id,
-// global_encoding, creation_day, creation_year) and the layers' labels.
+// `info` and the layers' labels. `info` is the header dict of a LAS input
+// (las_header_dict(): what carry_las_input() keeps of it), or holds the
+// scale, offset and rgb of other points.
 cas3::Las_output_header las_output_header(const py::dict& info, const std::vector<std::string>& labels)
 {
   cas3::Las_output_header h;
+  try { h.extra = cas3::las_extra_fields(labels); }
+  catch(const std::invalid_argument& e) { throw py::value_error(e.what()); }
   const auto scale = info["scale"].cast<std::vector<double> >(), offset = info["offset"].cast<std::vector<double> >();
   if(scale.size() != 3 || offset.size() != 3)
     throw py::value_error("write_las: scale and offset have three values");
@@ -920,18 +987,40 @@ cas3::Las_output_header las_output_header(const py::dict& info, const std::vecto
     h.scale[k] = scale[std::size_t(k)];
     h.offset[k] = offset[std::size_t(k)];
   }
-  h.rgb = info["rgb"].cast<bool>();
-  for(const char* key : {"file_source_id", "global_encoding", "creation_day", "creation_year"})
-    if(info.contains(key))
-    {
-      const std::uint16_t value = info[key].cast<std::uint16_t>();
-      const std::string k = key;
-      (k == "file_source_id" ? h.file_source_id : k == "global_encoding" ? h.global_encoding
-                                                 : k == "creation_day"   ? h.creation_day
-                                                                         : h.creation_year) = value;
-    }
-  try { h.extra = cas3::las_extra_fields(labels); }
-  catch(const std::invalid_argument& e) { throw py::value_error(e.what()); }
+  if(!info.contains("point_format"))
+  {
+    h.rgb = info["rgb"].cast<bool>();
+    return h;
+  }
+  cas3::Las_header in;
+  in.point_format = info["point_format"].cast<int>();
+  if(in.point_format < 0 || in.point_format > 10)
+    throw py::value_error("write_las: the point format of a LAS input is 0 to 10");
+  std::copy(h.scale, h.scale + 3, in.scale);
+  std::copy(h.offset, h.offset + 3, in.offset);
+  in.file_source_id = info["file_source_id"].cast<std::uint16_t>();
+  in.global_encoding = info["global_encoding"].cast<std::uint16_t>();
+  in.creation_day = info["creation_day"].cast<std::uint16_t>();
+  in.creation_year = info["creation_year"].cast<std::uint16_t>();
+  in.extra_bytes = info["extra_bytes_length"].cast<std::size_t>();
+  std::string descriptors;
+  for(const py::handle field : info["extra_bytes"].cast<py::list>())
+    descriptors += field["descriptor"].cast<std::string>();
+  for(const py::handle record : info["crs"].cast<py::list>())
+  {
+    cas3::Las_vlr v;
+    v.user_id = bytes_of_text(record["user_id"]);
+    v.record_id = record["record_id"].cast<std::uint16_t>();
+    v.description = bytes_of_text(record["description"]);
+    v.data = record["data"].cast<std::string>();
+    in.crs.push_back(v);
+  }
+  try
+  {
+    in.extra_fields = cas3::las_detail::extra_bytes_fields(descriptors, in.extra_bytes, "write_las");
+    cas3::carry_las_input(in, h);
+  }
+  catch(const std::exception& e) { throw py::value_error(e.what()); }
   return h;
 }
 
@@ -948,9 +1037,10 @@ py::tuple las_scale(const std::vector<double>& low, const std::vector<double>& h
                         py::make_tuple(h.offset[0], h.offset[1], h.offset[2]));
 }
 
-// The point records of a LAS 1.4 file (format 6 or 7 and the extra bytes
-// of the layers) for the points, their outlier flags and the layers: the
-// LAS input's fields when `fields` is a dict (las_fields_dict()), else the
+// The point records of a LAS 1.4 file (format 6, 7 or 8, the input's extra
+// bytes and those of the layers) for the points, their outlier flags and
+// the layers: the LAS input's fields when `fields` is a dict
+// (las_fields_dict(), with `info` its header's dict), else the
 // points written with the scale and offset of `info`. Returns (bytes,
 // stats) where stats holds the records' smallest and largest scaled
 // integers (min, max) and their counts by return (by_return), for
@@ -967,8 +1057,16 @@ py::tuple las_records(const Doubles& points_array_in, const py::array_t<bool>& o
     labels.push_back(layer.label);
   cas3::Las_output_header h = las_output_header(info, labels);
   std::vector<cas3::Las_record> records;
+  std::vector<char> extra;
+  const std::size_t stride = info.contains("extra_bytes_length") ? info["extra_bytes_length"].cast<std::size_t>() : 0;
   if(!fields.is_none())
+  {
     records = las_records_of(fields.cast<py::dict>(), n);
+    if(!h.carried.empty())
+      extra = las_extra_bytes_of(fields.cast<py::dict>(), n, stride);
+  }
+  else if(!h.carried.empty())
+    throw py::value_error("write_las: the extra bytes of a LAS input need its fields");
   else
   {
     records.resize(n);
@@ -985,7 +1083,9 @@ py::tuple las_records(const Doubles& points_array_in, const py::array_t<bool>& o
   std::ostringstream out;
   {
     py::gil_scoped_release release;
-    cas3::write_las_point_records(out, n, h, [&](std::size_t i) { return records[i]; }, is_outlier, values);
+    cas3::write_las_point_records(
+      out, n, h, [&](std::size_t i) { return records[i]; }, [&](std::size_t i) { return extra.data() + i * stride; },
+      is_outlier, values);
   }
   std::int64_t low[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, high[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
   std::vector<std::uint64_t> by_return(15, 0);
@@ -1007,9 +1107,10 @@ py::tuple las_records(const Doubles& points_array_in, const py::array_t<bool>& o
   return py::make_tuple(py::bytes(out.str()), stats);
 }
 
-// The header and Extra Bytes VLR of a LAS 1.4 file of `count` records of
-// las_records() (info, labels), with the merged stats of its chunks.
-py::bytes las_header(const py::dict& info, const std::vector<std::string>& labels, std::uint64_t count,
+// The bytes before and after the point records of a LAS 1.4 file of
+// `count` records of las_records() (info, labels), with the merged stats of
+// its chunks: (the header and VLRs, the EVLRs).
+py::tuple las_header(const py::dict& info, const std::vector<std::string>& labels, std::uint64_t count,
                      const std::vector<std::int64_t>& low, const std::vector<std::int64_t>& high,
                      const std::vector<std::uint64_t>& by_return)
 {
@@ -1025,7 +1126,7 @@ py::bytes las_header(const py::dict& info, const std::vector<std::string>& label
       std::swap(h.min[k], h.max[k]);
   }
   std::copy(by_return.begin(), by_return.end(), h.points_by_return);
-  return py::bytes(cas3::las_header_bytes(h));
+  return py::make_tuple(py::bytes(cas3::las_header_bytes(h)), py::bytes(cas3::las_evlr_bytes(h)));
 }
 
 CAS3::Surface_extraction extraction_named(const std::string& name)
@@ -1520,7 +1621,7 @@ PYBIND11_MODULE(_native, m)
   m.def("read_point_cloud", &read_point_cloud, py::arg("path"), py::arg("classes"), py::arg("drop_withheld"),
         py::arg("returns"));
   m.def("read_las_chunk", &read_las_chunk, py::arg("path"), py::arg("first"), py::arg("count"), py::arg("classes"),
-        py::arg("drop_withheld"), py::arg("returns"));
+        py::arg("drop_withheld"), py::arg("returns"), py::arg("with_fields"));
   m.def("las_scale", &las_scale);
   m.def("las_records", &las_records, py::arg("points"), py::arg("outlier"), py::arg("layers"), py::arg("fields"),
         py::arg("info"));

@@ -19,7 +19,12 @@ With --a-spread, one run's own automatic scale on the cloud translated by
 spacing): a translation changes no distance beyond rounding, but it changes
 every point's coordinate hash, so the points that sample the spacing and
 the noise, so the denoising and the front; the tiled run's difference in
-`a` is read against that spread.
+`a` is read against that spread. With --las instead, the scene's points at 1e-7
+steps as LAS 1.4 (point format 6, an extra-bytes field, a WKT CRS) and as
+binary PLY, a tiled run on each (--merge, --las for the LAS): each driver's
+peak memory (its own, not its workers': the peak RSS, and the anonymous
+memory sampled every 50 ms), and whether the merged files hold
+the same values and the LAS the input's records and extra bytes.
 The result is printed as JSON; --csv FILE also writes it as `quantity,value`
 rows (nested keys joined by dots) headed by the `# commit`, `# machine` and
 `# command` lines (cas3_benchmark.py).
@@ -86,6 +91,78 @@ def compare(folder, one, reference):
     return out
 
 
+DRIVER = r"""
+import resource, runpy, sys
+sys.argv = ["conformal_alpha_shapes.tiles"] + sys.argv[1:]
+try:
+    runpy.run_module("conformal_alpha_shapes.tiles", run_name="__main__")
+finally:
+    print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024, file=sys.stderr)
+"""
+
+
+def las_against_ply(cloud, folder, args):
+    """Tiled runs on the same points as LAS and as PLY: drivers' peak memory, same answer."""
+    import las_spec
+    from conformal_alpha_shapes import tile_io
+    points = np.load(cloud, mmap_mode="r")[:, :3]
+    step = 1e-7
+    integers = np.round(np.asarray(points) / step).astype(np.int32)
+    fields = las_spec.sample_fields(len(points), 6)
+    for k, axis in enumerate("XYZ"):
+        fields[axis] = integers[:, k]
+    reflectance = np.arange(len(points), dtype=np.float32)
+    paths = {"las": os.path.join(folder, "scene.las"), "ply": os.path.join(folder, "scene.ply")}
+    las_spec.write_las(paths["las"], 4, 6, fields, scale=(step,) * 3, offset=(0.0,) * 3, crs="wkt",
+                       extra=[("reflectance", "<f4", reflectance)])
+    with open(paths["ply"], "wb") as f:
+        f.write(f"ply\nformat binary_little_endian 1.0\nelement vertex {len(points)}\nproperty double x\n"
+                "property double y\nproperty double z\nend_header\n".encode())
+        (integers.astype(np.float64) * step).tofile(f)
+    del integers, fields, reflectance
+    out = {}
+    for kind, path in paths.items():
+        start = time.perf_counter()
+        log = open(os.path.join(folder, f"tiled_{kind}.log"), "w+")
+        run = subprocess.Popen([sys.executable, "-c", DRIVER, path, "--output", os.path.join(folder, f"tiled_{kind}"),
+                                "--tile-points", str(args.tile_points), "--workers", str(args.workers), "--merge",
+                                "--quiet"] + (["--las"] if kind == "las" else []), stderr=log)
+        # the peak RSS counts the pages of the memory-mapped files it writes
+        # (the merged file), which the kernel may drop: the anonymous memory
+        # (RssAnon) is sampled too
+        anonymous = 0
+        while run.poll() is None:
+            try:
+                with open(f"/proc/{run.pid}/status") as f:
+                    anonymous = max([anonymous] + [int(line.split()[1]) * 1024 for line in f
+                                                   if line.startswith("RssAnon:")])
+            except OSError:
+                pass
+            time.sleep(0.05)
+        log.seek(0)
+        stderr = log.read()
+        log.close()
+        if run.returncode:
+            raise RuntimeError(f"the tiled run on {path} failed: {stderr}")
+        out[kind] = {"wall": time.perf_counter() - start, "driver_peak_rss": int(stderr.split()[-1]),
+                     "driver_peak_anonymous_sampled": anonymous, "input_bytes": os.path.getsize(path)}
+    names = tile_io.read_manifest(os.path.join(folder, "tiled_ply", "manifest.json"))["names"]
+    merged_path = os.path.join(folder, "tiled_ply", "curvatures.ply")
+    merged = np.memmap(merged_path, dtype=tile_io.part_dtype(names, False), mode="r",
+                       offset=len(tile_io.part_header(merged_path)))
+    header, records, extra, xyz = las_spec.read_las(os.path.join(folder, "tiled_las", "curvatures.las"))
+    same = all(np.array_equal(extra[f"{value}_{name}"], merged[f"{value}_{name}"], equal_nan=True)
+               for name in names for value in ("nx", "ny", "nz", "H", "K", "k1", "k2", "radius", "distance"))
+    input_header, input_records, input_extra, _ = las_spec.read_las(paths["las"])
+    out["same_values"] = bool(same and np.array_equal(extra["outlier"], merged["outlier"]))
+    out["same_points"] = bool(np.array_equal(xyz[:, 0], merged["x"]) and np.array_equal(xyz[:, 2], merged["z"]))
+    out["input_records_kept"] = bool(np.array_equal(records["X"], input_records["X"])
+                                     and np.array_equal(records["gps_time"], input_records["gps_time"])
+                                     and np.array_equal(extra["reflectance"], input_extra["reflectance"])
+                                     and las_spec.crs_records(header) == las_spec.crs_records(input_header))
+    return out
+
+
 def a_spread(cloud):
     """One run's automatic scale on the cloud translated by small fractions
     of its diagonal, relative to the untranslated cloud's."""
@@ -119,6 +196,8 @@ def main():
     parser.add_argument("--folder", default=None, help="where the cloud and the outputs go (default: a temporary one)")
     parser.add_argument("--no-one-run", action="store_true")
     parser.add_argument("--csv", help="where to write the result as quantity,value rows")
+    parser.add_argument("--las", action="store_true",
+                        help="also tiled runs on the points as LAS and as PLY: drivers' memory, same answer")
     parser.add_argument("--a-spread", action="store_true",
                         help="also one run's automatic scale on the cloud translated by tiny fractions of its size")
     args = parser.parse_args()
@@ -133,6 +212,12 @@ def main():
         np.save(cloud, scene(args.points)[0])
     result = {"points": int(np.load(cloud, mmap_mode="r").shape[0]), "tile_points": args.tile_points,
               "workers": args.workers}
+    if args.las:
+        result["las_against_ply"] = las_against_ply(cloud, folder, args)
+        print(json.dumps(result, indent=1))
+        if args.csv:
+            write_csv(args.csv, ["quantity", "value"], flatten(result))
+        return
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", cloud, "--output",

@@ -76,17 +76,22 @@ std::unique_ptr<Analysis> analyze(const cas3::Curvature_options& o, const cas3::
 int run(const cas3::Curvature_options& o)
 {
   const Progress progress(o.quiet);
+  std::vector<std::string> labels;
+  for(const CAS3::Scale& scale : o.scales)
+    for(const CAS3::Neighborhood& neighborhood : o.neighborhoods)
+      labels.push_back(cas3::layer_label(scale, neighborhood, o.scales.size() > 1));
   if(o.las)  // before any work: layer names too long for LAS fail first
   {
-    std::vector<std::string> labels;
-    for(const CAS3::Scale& scale : o.scales)
-      for(const CAS3::Neighborhood& neighborhood : o.neighborhoods)
-        labels.push_back(cas3::layer_label(scale, neighborhood, o.scales.size() > 1));
     try { cas3::las_extra_fields(labels); }
     catch(const std::invalid_argument& e) { throw std::runtime_error(std::string("--las: ") + e.what()); }
   }
   cas3::Output_transaction output(o.output);  // before any work: an unwritable folder fails first
   const cas3::Point_cloud cloud = cas3::read_point_cloud(o.input, o.las_filter, o.las);
+  if(o.las)  // and, before the work, the input's extra bytes that do not fit beside them
+  {
+    try { cas3::las_output_header(cloud.las, labels); }
+    catch(const std::invalid_argument& e) { throw std::runtime_error(std::string("--las: ") + e.what()); }
+  }
   const std::vector<Point>& points = cloud.points;
   progress("read " + std::to_string(points.size()) + " points");
   const std::unique_ptr<Analysis> analysis = analyze(o, cloud);

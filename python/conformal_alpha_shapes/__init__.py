@@ -407,14 +407,17 @@ class Result:
     def write_las(self, path, cloud=None):
         """Writes the values per point as LAS 1.4 to ``path`` (the program's ``--las``).
 
-        Point format 6, or 7 when ``cloud`` has colors; the curvature values
-        as extra bytes described by the Extra Bytes VLR (record 4 of
-        LASF_Spec) under the PLY's names (``outlier``, ``nx_L`` .. ``distance_L``
-        as float32, ``source_L``), which lidR, PDAL and CloudCompare read as
-        named attributes. ``cloud``: the ``PointCloud`` that
-        ``read_point_cloud`` gave for a LAS file, whose points these are:
-        its scaled integers, scale, offset and fields (classification,
-        returns, intensity, flags, GPS time, colors) are written as read.
+        Point format 6, or 7 when ``cloud`` has colors (8 with NIR); the
+        curvature values as extra bytes described by the Extra Bytes VLR
+        (record 4 of LASF_Spec) under the PLY's names (``outlier``, ``nx_L``
+        .. ``distance_L`` as float32, ``source_L``), which lidR, PDAL and
+        CloudCompare read as named attributes. ``cloud``: the ``PointCloud``
+        that ``read_point_cloud`` gave for a LAS file, whose points these
+        are: its scaled integers, scale, offset and fields (classification,
+        returns, intensity, flags, GPS time, colors) are written as read,
+        and so are its own extra bytes (their descriptors first in the Extra
+        Bytes VLR, a field named as a curvature field replaced by it) and its
+        CRS records (GeoTIFF keys, WKT, and the WKT bit).
         Without it the points are written with a power-of-ten scale that
         holds their range (at most half a step from each coordinate). The
         file is written beside ``path`` and renamed into place.
@@ -436,12 +439,13 @@ class Result:
             fields = None
         layers = [vars(self[name]) for name in self.layers]
         records, stats = _native.las_records(self._points, self.outlier, layers, fields, info)
-        header = _native.las_header(info, list(self.layers), len(self._points), list(stats["min"]),
-                                    list(stats["max"]), list(stats["by_return"]))
+        header, evlrs = _native.las_header(info, list(self.layers), len(self._points), list(stats["min"]),
+                                           list(stats["max"]), list(stats["by_return"]))
         def write(temporary):
             with open(temporary, "wb") as f:
                 f.write(header)
                 f.write(records)
+                f.write(evlrs)
         atomic_write(path, write)
 
     def to_dataframe(self, name):
@@ -868,9 +872,18 @@ class PointCloud(tuple):
         withheld, synthetic, key_point, overlap (bool), gps_time,
         point_source_id, user_data, scan_angle (int16, in 0.006 degrees),
         scanner_channel, scan_direction, edge_of_flight_line, red, green,
-        blue, nir, and the scaled integers X, Y, Z; else None;
+        blue, nir, the scaled integers X, Y, Z, and extra_bytes, an (N, m)
+        uint8 array of each record's bytes beyond its point format's (m is
+        ``las["extra_bytes_length"]``); else None;
     las: for a LAS file, its header (version, point_format, number_of_points,
-        scale, offset, rgb, ...); else None;
+        scale, offset, rgb, nir, global_encoding, ...), its extra-bytes
+        fields (``las["extra_bytes"]``: name, data_type, offset and size in
+        ``fields["extra_bytes"]``, and the 192-byte descriptor of the Extra
+        Bytes VLR; bytes that no descriptor names are a field
+        "undescribed_extra_bytes" of data type 0) and its CRS records
+        (``las["crs"]``: user_id, record_id, description and data of the
+        GeoTIFF keys 34735, 34736, 34737 and the WKT 2112, VLRs then
+        EVLRs); else None;
     counts: for a LAS file, how many points were read and how many each
         filter kept, in order (read, classes, withheld, returns); else None;
     summary: for a LAS file, the program's summary line of the input.

@@ -214,6 +214,8 @@ def _open_xyz(path):
 
 # LAS records read at a time: a chunk's points and fields take about 100 bytes each.
 LAS_CHUNK = 1 << 20
+# LAS records of the merged file made at a time (the values in double, about 1 kB each).
+LAS_RECORDS_MADE = 1 << 16
 
 
 def _open_las(path, las_filter):
@@ -223,34 +225,34 @@ def _open_las(path, las_filter):
     classes = [str(c) for c in las_filter.get("classes", ())]
     drop, returns = bool(las_filter.get("drop_withheld", False)), las_filter.get("returns", "all")
 
-    def read(first, size):
+    def read(first, size, with_fields):
         try:
-            return _native.read_las_chunk(path, first, size, classes, drop, returns)
+            return _native.read_las_chunk(path, first, size, classes, drop, returns, with_fields)
         except ValueError as e:
             raise InputError(str(e)) from None
 
-    head = read(0, 0)
+    head = read(0, 0, False)
     total = head["las"]["number_of_points"]
 
-    def kept_chunks(size):
+    def kept_chunks(size, with_fields):
         start = 0
         for first in range(0, total, size):
-            chunk = read(first, size)
+            chunk = read(first, size, with_fields)
             yield start, chunk
             start += len(chunk["points"])
 
     counts = {"read": 0, "classes": 0, "withheld": 0, "returns": 0}
-    for _, chunk in kept_chunks(LAS_CHUNK):
+    for _, chunk in kept_chunks(LAS_CHUNK, False):
         for key in counts:
             counts[key] += chunk["counts"][key]
 
     def chunks(size):
-        for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK)):
+        for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK), False):
             if len(chunk["points"]):
                 yield start, chunk["points"], None
 
     def fields(size):
-        for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK)):
+        for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK), True):
             if len(chunk["points"]):
                 yield start, chunk["fields"]
 
@@ -400,8 +402,9 @@ def merge_parts(path, part_paths, layers, descriptions, count):
 def merge_parts_las(path, merged_ply, layers, cloud):
     """``path``: the merged ``curvatures.ply`` (``merged_ply``, in input
     order) as LAS 1.4, a chunk at a time: the LAS input's records (its
-    scaled integers and fields), else the points at a power-of-ten scale;
-    the layers' values as named extra bytes (as ``Result.write_las``)."""
+    scaled integers, fields and extra bytes) and CRS records, else the
+    points at a power-of-ten scale; the layers' values as named extra bytes
+    (as ``Result.write_las``)."""
     from . import _native
     records = np.memmap(merged_ply, dtype=part_dtype(layers, with_index=False), mode="r",
                         offset=len(part_header(merged_ply)))
@@ -435,27 +438,33 @@ def merge_parts_las(path, merged_ply, layers, cloud):
 
     def write(temporary):
         nonlocal low, high, by_return
-        header_size = len(_native.las_header(info, list(layers), 0, [0] * 3, [0] * 3, [0] * 15))
+        header_size = len(_native.las_header(info, list(layers), 0, [0] * 3, [0] * 3, [0] * 15)[0])
         with open(temporary, "wb") as f:
             f.write(b"\0" * header_size)
             written = 0
             for start, fields in field_chunks:
                 n = len(fields["X"]) if fields is not None else min(LAS_CHUNK, count - start)
-                block = records[start:start + n]
-                points = np.column_stack([block[axis] for axis in "xyz"]).astype(np.float64)
-                data, stats = _native.las_records(points, block["outlier"].astype(bool),
-                                                  [layer_arrays(block, name) for name in layers], fields, info)
-                f.write(data)
+                for first in range(0, n, LAS_RECORDS_MADE):
+                    size = min(LAS_RECORDS_MADE, n - first)
+                    block = records[start + first:start + first + size]
+                    points = np.column_stack([block[axis] for axis in "xyz"]).astype(np.float64)
+                    part = None if fields is None else {key: values[first:first + size]
+                                                        for key, values in fields.items()}
+                    data, stats = _native.las_records(points, block["outlier"].astype(bool),
+                                                      [layer_arrays(block, name) for name in layers], part, info)
+                    f.write(data)
+                    low = np.minimum(low, stats["min"])
+                    high = np.maximum(high, stats["max"])
+                    by_return += np.array(stats["by_return"], np.uint64)
                 written += n
-                low = np.minimum(low, stats["min"])
-                high = np.maximum(high, stats["max"])
-                by_return += np.array(stats["by_return"], np.uint64)
             if written != count:
                 raise InputError(f"{cloud.path}: the input changed during the run ({written} points, "
                                  f"the parts hold {count})")
+            header, evlrs = _native.las_header(info, list(layers), count, [int(x) for x in low],
+                                               [int(x) for x in high], [int(x) for x in by_return])
+            f.write(evlrs)
             f.seek(0)
-            f.write(_native.las_header(info, list(layers), count, [int(x) for x in low], [int(x) for x in high],
-                                       [int(x) for x in by_return]))
+            f.write(header)
     atomic_write(path, write)
 
 

@@ -209,8 +209,9 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
         client: an existing ``distributed.Client`` instead of either.
         merge: also write ``curvatures.ply``, the program's file.
         las: with ``merge``, write ``curvatures.las`` instead (LAS 1.4, as
-            ``Result.write_las``: a LAS input's records and fields, the
-            values as named extra bytes), a chunk at a time.
+            ``Result.write_las``: a LAS input's records, fields, extra bytes
+            and CRS records, the values as named extra bytes), a chunk at a
+            time; the parts stay binary PLY.
         classes, drop_withheld, returns: for a LAS input, the filters of
             ``read_point_cloud``: the run is on the points they keep (the
             parts' ``input_index`` counts those).

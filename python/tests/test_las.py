@@ -43,6 +43,105 @@ def test_every_version_and_format_reads_as_the_independent_reader(tmp_path, mino
                 assert np.array_equal(extra_read["id"], np.arange(300))
 
 
+# Files as other LAS tools write them: (version minor, point format, CRS
+# and where) with extra bytes (scaled ones, undescribed bytes after them),
+# bytes between the VLRs and the points, a legacy count left 0 in LAS 1.4,
+# wave packets in format 4.
+AS_TOOLS_WRITE_THEM = [(1, 1, "geotiff"), (2, 1, "geotiff"), (2, 3, "geotiff"), (3, 1, "geotiff"), (3, 3, None),
+                       (3, 4, "geotiff"), (4, 1, "geotiff"), (4, 3, "wkt"), (4, 4, "wkt"), (4, 6, "wkt"),
+                       (4, 7, "wkt evlr"), (4, 8, "wkt")]
+
+
+def _tool_file(path, minor, fmt, crs, points, with_extra, step=1e-6):
+    """A file of ``points`` (at ``step``) as AS_TOOLS_WRITE_THEM describes it."""
+    n = len(points)
+    fields = las_spec.sample_fields(n, fmt, seed=fmt)
+    for k, axis in enumerate("XYZ"):
+        fields[axis] = np.round(points[:, k] / step).astype(np.int32)
+    extra = [("reflectance", "<f4", np.linspace(-1, 1, n).astype(np.float32)),
+             ("amplitude", "<u2", (np.arange(n) * 7 % 65536).astype(np.uint16), 0.01, 5.0),
+             ("pulse_id", "<u8", np.arange(n, dtype=np.uint64) + 2**40)] if with_extra else ()
+    las_spec.write_las(path, minor, fmt, fields, scale=(step,) * 3, offset=(0.0,) * 3, extra=extra,
+                       crs=crs and crs.split()[0], crs_in_evlr=crs == "wkt evlr", padding=b"\0" * 13,
+                       undescribed=3 if with_extra else 0, legacy_count_zero=minor == 4, evlr=minor == 4)
+
+
+def test_files_as_other_tools_write_them_read_and_write_back_with_their_extra_bytes_and_crs(tmp_path):
+    """The package reads each file's scaled integers and coordinates as the
+    independent reader, to the last bit, with its extra bytes and CRS
+    records; write_las carries them beside the curvature fields, as both
+    readers see."""
+    points, _ = fibonacci_sphere(400)
+    points += (0.5, -0.25, 2.0)
+    r = cas.multiscale_curvatures(points, radii=("4s",))
+    names = ["outlier"] + [f"{v}_r4s" for v in ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x",
+                                                 "d2y", "d2z", "radius", "distance", "source")]
+    for minor, fmt, crs in AS_TOOLS_WRITE_THEM:
+        for with_extra in (False, True):
+            case = (minor, fmt, crs, with_extra)
+            path = tmp_path / f"v{minor}_f{fmt}_{int(with_extra)}.las"
+            _tool_file(path, minor, fmt, crs, points, with_extra)
+            header, records, extra, xyz = las_spec.read_las(path)
+            cloud = cas.read_point_cloud(path)
+            assert cloud.points.tobytes() == xyz.tobytes(), case
+            for axis in "XYZ":
+                assert np.array_equal(cloud.fields[axis], records[axis]), case
+            base = header["base_length"]
+            raw = np.frombuffer(path.read_bytes(), np.uint8, count=header["count"] * header["record_length"],
+                                offset=header["offset_to_points"]).reshape(-1, header["record_length"])
+            assert np.array_equal(cloud.fields["extra_bytes"], raw[:, base:]), case
+            assert [(e["name"], e["descriptor"]) for e in cloud.las["extra_bytes"]][:len(header["descriptors"])] \
+                == [(d["name"], d["bytes"]) for d in header["descriptors"]], case
+            assert [(c["record_id"], c["data"]) for c in cloud.las["crs"]] == las_spec.crs_records(header), case
+            if "nir" in records.dtype.names:
+                assert np.array_equal(cloud.fields["nir"], records["nir"])
+
+            out = tmp_path / f"out_v{minor}_f{fmt}_{int(with_extra)}.las"
+            r.write_las(out, cloud)
+            out_header, out_records, out_extra, out_xyz = las_spec.read_las(out)
+            assert out_header["minor"] == 4 and out_header["format"] == {3: 7, 7: 7, 8: 8}.get(fmt, 6), case
+            assert out_xyz.tobytes() == xyz.tobytes(), case
+            assert np.array_equal(out_records["gps_time"], records["gps_time"]), case
+            for name, values in las_spec.filter_fields(records, fmt).items():
+                assert np.array_equal(las_spec.filter_fields(out_records, out_header["format"])[name], values)
+            # the input's descriptors (the undescribed bytes as data type 0), then the curvature fields
+            carried = [e["descriptor"] for e in cloud.las["extra_bytes"]]
+            assert [d["bytes"] for d in out_header["descriptors"][:len(carried)]] == carried, case
+            assert [d["name"] for d in out_header["descriptors"][len(carried):]] == names, case
+            if with_extra:
+                for name in ("reflectance", "amplitude", "pulse_id"):
+                    assert np.array_equal(out_extra[name], extra[name]), (case, name)
+                assert out_header["descriptors"][1]["scale"] == 0.01 and out_header["descriptors"][1]["offset"] == 5
+                assert out_header["descriptors"][3]["data_type"] == 0 and out_header["descriptors"][3]["options"] == 3
+            assert np.array_equal(out_extra["H_r4s"], r["r4s"].H.astype(np.float32)), case
+            assert las_spec.crs_records(out_header) == las_spec.crs_records(header), case
+            # the WKT bit: set with a WKT or without any CRS, clear when the CRS is GeoTIFF keys
+            assert bool(out_header["global_encoding"] & 16) == (crs != "geotiff"), case
+            back = cas.read_point_cloud(out)
+            assert back.points.tobytes() == xyz.tobytes()
+            assert np.array_equal(back.fields["extra_bytes"][:, :raw.shape[1] - base], raw[:, base:]), case
+            assert back.las["crs"] == cloud.las["crs"], case
+
+
+def test_an_input_field_named_as_a_curvature_field_is_replaced(tmp_path):
+    """A curvatures.las read again: its own curvature fields are replaced by
+    the new ones, its other extra bytes carried."""
+    points, _ = fibonacci_sphere(300)
+    path = tmp_path / "first.las"
+    _tool_file(path, 4, 6, "wkt", points, True)
+    cloud = cas.read_point_cloud(path)
+    cas.multiscale_curvatures(cloud.points, radii=("4s",)).write_las(tmp_path / "second.las", cloud)
+    again = cas.read_point_cloud(tmp_path / "second.las")
+    r = cas.multiscale_curvatures(again.points, radii=("4s", "8s"))
+    r.write_las(tmp_path / "third.las", again)
+    header, _, extra, _ = las_spec.read_las(tmp_path / "third.las")
+    names = [d["name"] for d in header["descriptors"]]
+    assert names[:4] == ["reflectance", "amplitude", "pulse_id", "undescribed_extra_bytes"]
+    assert names.count("outlier") == 1 and names.count("H_r4s") == 1 and "H_r8s" in names
+    assert np.array_equal(extra["H_r8s"], r["r8s"].H.astype(np.float32))
+    assert np.array_equal(extra["H_r4s"], r["r4s"].H.astype(np.float32))
+
+
 def test_point_count_of_each_version(tmp_path):
     fields = las_spec.sample_fields(40, 1)
     las_spec.write_las(tmp_path / "legacy_in_14.las", 4, 1, fields)
@@ -111,10 +210,11 @@ def test_write_las_keeps_the_fields_and_names_the_values(tmp_path):
         assert np.array_equal(fields[name], cloud.fields[name]), name
     assert np.array_equal(records["gps_time"], cloud.fields["gps_time"])
     assert np.array_equal(records["red"], cloud.fields["red"])
-    names = ["outlier"] + [f"{v}_{layer}" for layer in r.layers for v in
-                           ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",
-                            "radius", "distance", "source")]
+    names = ["reflectance", "outlier"] + [f"{v}_{layer}" for layer in r.layers for v in
+                                          ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x",
+                                           "d2y", "d2z", "radius", "distance", "source")]
     assert list(extra) == names
+    assert np.array_equal(extra["reflectance"], np.ones(len(cloud.points), np.float32))
     for layer in r.layers:
         assert np.array_equal(extra[f"H_{layer}"], r[layer].H.astype(np.float32))
         assert np.array_equal(extra[f"d2y_{layer}"], r[layer].d2[:, 1].astype(np.float32))
@@ -124,8 +224,9 @@ def test_write_las_keeps_the_fields_and_names_the_values(tmp_path):
     back = cas.read_point_cloud(out)
     assert back.points.tobytes() == cloud.points.tobytes()
     for name, values in cloud.fields.items():
-        if name != "nir":
+        if name not in ("nir", "extra_bytes"):
             assert np.array_equal(back.fields[name], values), name
+    assert np.array_equal(back.fields["extra_bytes"][:, :4], cloud.fields["extra_bytes"])
     assert back.las["version"] == "1.4" and back.las["point_format"] == 7
 
 
@@ -164,6 +265,24 @@ def test_laz_and_bad_files_get_their_message(tmp_path):
         "scale.las": (data[:131] + struct.pack("<d", float("nan")) + data[139:], "X scale factor is not finite"),
         "short.las": (data[:50], "truncated LAS header"),
     }
+    # the VLRs and EVLRs: one that runs into the points, one beyond the
+    # file, an Extra Bytes VLR that does not fit the records
+    las_spec.write_las(good, 4, 6, fields, extra=[("a", "<f4", np.zeros(10, np.float32))], crs="wkt",
+                       crs_in_evlr=True)
+    data = good.read_bytes()
+    header, _, _, _ = las_spec.read_las(good)
+    vlr_end = header["offset_to_points"]
+    evlr_start = vlr_end + 10 * header["record_length"]
+    cases.update({
+        "vlr.las": (data[:100] + struct.pack("<I", 2) + data[104:], "VLR 2 of 2 runs into the point data"),
+        "evlr.las": (data[:evlr_start + 20] + struct.pack("<Q", 10**6) + data[evlr_start + 28:],
+                     "EVLR 1 of 1 is beyond the end of the file"),
+        "evlr_start.las": (data[:235] + struct.pack("<Q", 400) + data[243:], r"the first EVLR \(at 400\) is not after"),
+        "extra_type.las": (data[:375 + 54 + 2] + bytes([31]) + data[375 + 54 + 3:],
+                           "extra-bytes field 1 of the Extra Bytes VLR has the unknown data type 31"),
+        "extra_size.las": (data[:375 + 54 + 2] + bytes([10]) + data[375 + 54 + 3:],
+                           "the Extra Bytes VLR describes 8 bytes per point or more, the records have 4"),
+    })
     for name, (content, message) in cases.items():
         path = tmp_path / name
         path.write_bytes(content)

@@ -76,8 +76,8 @@ def test_noisy_ellipsoid_100k(tmp_path):
 
 
 def test_las_the_program_and_the_module_write_the_same_bytes(tmp_path):
-    """A LAS 1.3 file (point format 3) of the kitten with noise of class 7:
-    the program's --classes 2 --las and the module's read_point_cloud and
+    """A LAS 1.3 file (point format 3, an extra-bytes field, a GeoTIFF CRS)
+    of the kitten with noise of class 7: the program's --classes 2 --las and the module's read_point_cloud and
     write_las give the same curvatures.las; so do both on the .xyz of the
     kitten (a chosen scale)."""
     import las_spec
@@ -90,12 +90,15 @@ def test_las_the_program_and_the_module_write_the_same_bytes(tmp_path):
         fields[axis] = np.round(everything[order, k] / 1e-6).astype(np.int32)
     fields["classification"] = np.where(order < len(points), 2, 7).astype(np.uint8)
     path = tmp_path / "kitten.las"
-    las_spec.write_las(path, 3, 3, fields, scale=(1e-6,) * 3, offset=(0.0,) * 3)
+    las_spec.write_las(path, 3, 3, fields, scale=(1e-6,) * 3, offset=(0.0,) * 3, crs="geotiff",
+                       extra=[("reflectance", "<f4", np.linspace(0, 1, len(everything)).astype(np.float32))])
     expected = program_output(path, tmp_path / "program", "--las", "--classes", "2") / "curvatures.las"
     cloud = cas.read_point_cloud(path, classes=[2])
     assert len(cloud.points) == len(points)
     cas.multiscale_curvatures(cloud.points).write_las(tmp_path / "module.las", cloud)
     assert (tmp_path / "module.las").read_bytes() == expected.read_bytes()
+    header, _, extra, _ = las_spec.read_las(expected)
+    assert header["descriptors"][0]["name"] == "reflectance" and len(las_spec.crs_records(header)) == 3
 
     xyz = tmp_path / "kitten_points.xyz"
     np.savetxt(xyz, points, fmt="%.17g")

@@ -490,10 +490,11 @@ def test_writes_are_atomic(tmp_path):
 
 
 def test_a_las_input_is_read_in_chunks_and_gives_the_answer_of_its_points_as_ply(client, tmp_path, monkeypatch):
-    """A LAS 1.2 file (point format 1) of a scene and noise of class 7: the
-    run on class 2 reads it a range of records at a time and writes
-    curvatures.las whose records are the input's and whose values are those
-    of a run on the same points as binary PLY."""
+    """A LAS 1.2 file (point format 1, extra bytes, a GeoTIFF CRS) of a
+    scene and noise of class 7: the run on class 2 reads it a range of
+    records at a time and writes curvatures.las whose records, extra bytes
+    and CRS are the input's and whose values are those of a run on the same
+    points as binary PLY."""
     import las_spec
     from conformal_alpha_shapes import _native
     points, _ = scene(24_000, seed=3)
@@ -510,8 +511,10 @@ def test_a_las_input_is_read_in_chunks_and_gives_the_answer_of_its_points_as_ply
     fields["classification"] = classification
     fields["withheld"] = np.zeros(len(everything), bool)
     las_path = tmp_path / "scene.las"
-    las_spec.write_las(las_path, 2, 1, fields, scale=scale, offset=offset)
-    _, records, _, xyz = las_spec.read_las(las_path)
+    reflectance = rng.uniform(0, 1, len(everything)).astype(np.float32)
+    las_spec.write_las(las_path, 2, 1, fields, scale=scale, offset=offset, crs="geotiff",
+                       extra=[("reflectance", "<f4", reflectance)], undescribed=2)
+    in_header, records, _, xyz = las_spec.read_las(las_path)
     kept = xyz[classification == 2]
     ply_path = tmp_path / "scene.ply"
     with open(ply_path, "wb") as f:
@@ -527,6 +530,7 @@ def test_a_las_input_is_read_in_chunks_and_gives_the_answer_of_its_points_as_ply
         return native_read(path, first, count, *rest)
     monkeypatch.setattr(_native, "read_las_chunk", recording)
     monkeypatch.setattr(tile_io, "LAS_CHUNK", 4096)
+    monkeypatch.setattr(tile_io, "LAS_RECORDS_MADE", 1000)
     options = dict(tile_points=6_000, client=client, merge=True, quiet=True, radii=("auto", "4s"))
     summary = tiles.process_tiles(las_path, tmp_path / "out_las", classes=[2], las=True, **options)
     assert max(requested) <= 4096 and len(requested) > 3 * len(everything) // 4096
@@ -544,6 +548,10 @@ def test_a_las_input_is_read_in_chunks_and_gives_the_answer_of_its_points_as_ply
     for axis in "XYZ":
         assert np.array_equal(out_records[axis], records[axis][classification == 2])
     assert np.array_equal(out_records["gps_time"], records["gps_time"][classification == 2])
+    # the input's extra bytes and CRS carried
+    assert np.array_equal(extra["reflectance"], reflectance[classification == 2])
+    assert np.array_equal(extra["undescribed_extra_bytes"], records["undescribed_extra"][classification == 2])
+    assert las_spec.crs_records(header) == las_spec.crs_records(in_header)
     merged = read_merged(tmp_path / "out_ply", summary["layers"])
     assert np.array_equal(extra["outlier"], merged["outlier"])
     for name in summary["layers"]:

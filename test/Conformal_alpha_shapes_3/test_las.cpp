@@ -40,6 +40,8 @@ struct Spec
   std::size_t n = 50;        // points
   std::size_t vlr_bytes = 0; // a VLR of this payload before the points
   bool evlr = false;         // a 1.4 EVLR after the points
+  bool describe_extra = false; // an Extra Bytes VLR: the first 4 extra bytes a float "reflectance"
+  bool crs = false;          // GeoTIFF keys in a VLR, and in LAS 1.4 a WKT EVLR and the WKT bit
   double scale[3] = {0.01, 0.001, 0.0025};
   double offset[3] = {1000.5, -20, 3};
 };
@@ -79,19 +81,56 @@ Expected expected(std::size_t i, int format)
 bool format_has_gps(int f) { return f != 0 && f != 2; }
 bool format_has_rgb(int f) { return f == 2 || f == 3 || f == 5 || f == 7 || f == 8 || f == 10; }
 
+// A VLR (or, `extended`, an EVLR) of `user`, `id` and `payload`.
+std::string record_of(const std::string& user, std::uint16_t id, const std::string& payload, bool extended)
+{
+  std::string r(extended ? 60 : 54, '\0');
+  std::memcpy(&r[2], user.data(), user.size());
+  set(r, 18, id);
+  if(extended)
+    set(r, 20, std::uint64_t(payload.size()));
+  else
+    set(r, 20, std::uint16_t(payload.size()));
+  return r + payload;
+}
+
+const std::string geokeys("\1\0\1\0\0\0\1\0\0\x0c\0\0\1\0\x79\x7f", 16);  // ProjectedCSTypeGeoKey 32633
+const std::string wkt = "PROJCS[\"WGS 84 / UTM zone 33N\",AUTHORITY[\"EPSG\",\"32633\"]]";
+
 std::string las_bytes(const Spec& s)
 {
   const int header_size = s.minor <= 2 ? 227 : (s.minor == 3 ? 235 : 375);
   const int record = record_sizes[s.format] + s.extra_bytes;
   std::string b(std::size_t(header_size), '\0');
   std::memcpy(&b[0], "LASF", 4);
+  if(s.crs && s.minor == 4)
+    set(b, 6, std::uint16_t(16));
   b[24] = 1;
   b[25] = char(s.minor);
   std::memcpy(&b[26], "test_las", 8);
   set(b, 94, std::uint16_t(header_size));
-  const std::size_t vlr = s.vlr_bytes > 0 ? 54 + s.vlr_bytes : 0;
-  set(b, 96, std::uint32_t(header_size + vlr));
-  set(b, 100, std::uint32_t(s.vlr_bytes > 0 ? 1 : 0));
+  std::string vlrs;
+  std::uint32_t number_of_vlrs = 0;
+  if(s.describe_extra)
+  {
+    std::string descriptor(192, '\0');
+    descriptor[2] = 9;  // float
+    std::memcpy(&descriptor[4], "reflectance", 11);
+    vlrs += record_of("LASF_Spec", 4, descriptor, false);
+    ++number_of_vlrs;
+  }
+  if(s.crs)
+  {
+    vlrs += record_of("LASF_Projection", 34735, geokeys, false);
+    ++number_of_vlrs;
+  }
+  if(s.vlr_bytes > 0)
+  {
+    vlrs += record_of("someone", 7, std::string(s.vlr_bytes, 'v'), false);
+    ++number_of_vlrs;
+  }
+  set(b, 96, std::uint32_t(std::size_t(header_size) + vlrs.size()));
+  set(b, 100, number_of_vlrs);
   b[104] = char(s.format);
   set(b, 105, std::uint16_t(record));
   set(b, 107, std::uint32_t(s.format <= 5 ? s.n : 0));
@@ -102,15 +141,7 @@ std::string las_bytes(const Spec& s)
   }
   if(s.minor >= 4)
     set(b, 247, std::uint64_t(s.n));
-  if(s.vlr_bytes > 0)
-  {
-    std::string v(54 + s.vlr_bytes, 'v');
-    set(v, 0, std::uint16_t(0));
-    std::memcpy(&v[2], "someone\0\0\0\0\0\0\0\0\0", 16);
-    set(v, 18, std::uint16_t(7));
-    set(v, 20, std::uint16_t(s.vlr_bytes));
-    b += v;
-  }
+  b += vlrs;
   for(std::size_t i = 0; i < s.n; ++i)
   {
     const Expected e = expected(i, s.format);
@@ -163,15 +194,16 @@ std::string las_bytes(const Spec& s)
     }
     b += r;
   }
-  if(s.evlr)
+  const bool wkt_evlr = s.crs && s.minor == 4;
+  if(s.evlr || wkt_evlr)
   {
     set(b, 235, std::uint64_t(b.size()));
-    set(b, 243, std::uint32_t(1));
-    std::string e(60 + 100, 'e');
-    set(e, 0, std::uint16_t(0));
-    set(e, 20, std::uint64_t(100));
-    b += e;
+    set(b, 243, std::uint32_t((s.evlr ? 1 : 0) + (wkt_evlr ? 1 : 0)));
   }
+  if(s.evlr)
+    b += record_of("someone", 8, std::string(100, 'e'), true);
+  if(wkt_evlr)
+    b += record_of("LASF_Projection", 2112, wkt + '\0', true);
   return b;
 }
 
@@ -424,6 +456,29 @@ BOOST_AUTO_TEST_CASE(bad_files_get_their_message)
   cases.push_back({"empty.las", with([](std::string& b) { set(b, 247, std::uint64_t(0)); }),
                    "empty.las: the file holds no point"});
   cases.push_back({"x.laz", good, "x.laz: compressed LAS (LAZ) cannot be read without LASzip"});
+  {
+    Spec records = s;
+    records.extra_bytes = 4;
+    records.describe_extra = true;
+    records.crs = true;
+    const std::string with_records = las_bytes(records);
+    auto with_r = [&](auto change) { std::string b = with_records; change(b); return b; };
+    std::uint32_t offset = 0;
+    std::memcpy(&offset, &with_records[96], 4);
+    const std::size_t evlr = offset + 10 * 34;
+    cases.push_back({"vlr.las", with_r([](std::string& b) { set(b, 100, std::uint32_t(3)); }),
+                     "vlr.las: VLR 3 of 3 runs into the point data"});
+    cases.push_back({"evlr.las", with_r([&](std::string& b) { set(b, evlr + 20, std::uint64_t(1000)); }),
+                     "evlr.las: EVLR 1 of 1 is beyond the end of the file"});
+    cases.push_back({"evlr_start.las", with_r([&](std::string& b) { set(b, 235, std::uint64_t(evlr - 1)); }),
+                     "is not after the point data"});
+    cases.push_back({"extra_type.las", with_r([](std::string& b) { b[375 + 54 + 2] = char(31); }),
+                     "extra-bytes field 1 of the Extra Bytes VLR has the unknown data type 31"});
+    cases.push_back({"extra_size.las", with_r([](std::string& b) { b[375 + 54 + 2] = char(10); }),
+                     "the Extra Bytes VLR describes 8 bytes per point or more, the records have 4"});
+    cases.push_back({"extra_vlr.las", with_r([](std::string& b) { set(b, 375 + 20, std::uint16_t(100)); }),
+                     "the Extra Bytes VLR has 100 bytes, not a multiple of its 192-byte descriptors"});
+  }
   for(const Case& c : cases)
   {
     const std::string path = write_file(c.name, c.bytes);
@@ -559,6 +614,78 @@ BOOST_AUTO_TEST_CASE(output_keeps_the_input_fields_and_names_the_extra_bytes)
     std::memcpy(&h, extra + 1 + 61 + 3 * 4, 4);
     BOOST_REQUIRE(h == layers[1].values[i * cas3::Layer::number_of_values + 3]);
   }
+}
+
+// A LAS 1.4 input of point format 8 with extra bytes (a described float
+// and 3 undescribed bytes) and a CRS (GeoTIFF keys in a VLR, WKT in an
+// EVLR): the output is format 8 with its NIR, carries the input's extra
+// bytes (their descriptors first) and CRS records with the WKT bit.
+BOOST_AUTO_TEST_CASE(output_carries_the_input_extra_bytes_and_crs)
+{
+  Spec s;
+  s.minor = 4;
+  s.format = 8;
+  s.n = 30;
+  s.extra_bytes = 7;
+  s.describe_extra = true;
+  s.crs = true;
+  s.evlr = true;
+  s.vlr_bytes = 5;
+  const cas3::Point_cloud cloud = cas3::parse_point_cloud(las_bytes(s), ".las", "input.las");
+  const cas3::Las_header& in = cloud.las.header;
+  BOOST_REQUIRE_EQUAL(in.crs.size(), 2u);
+  BOOST_TEST(in.crs[0].record_id == 34735);
+  BOOST_TEST(in.crs[0].data == geokeys);
+  BOOST_TEST(in.crs[1].record_id == 2112);
+  BOOST_TEST(in.crs[1].data == wkt + '\0');
+  BOOST_REQUIRE_EQUAL(in.extra_fields.size(), 2u);
+  BOOST_TEST(in.extra_fields[0].name == "reflectance");
+  BOOST_TEST(in.extra_fields[1].name == "undescribed_extra_bytes");
+  BOOST_TEST(in.extra_fields[1].offset == 4u);
+  BOOST_TEST(in.extra_fields[1].size == 3u);
+  BOOST_REQUIRE_EQUAL(cloud.las.extra_bytes.size(), 7 * s.n);
+  BOOST_TEST(std::uint8_t(cloud.las.extra_bytes[0]) == 0xAB);
+
+  const std::size_t n = cloud.points.size();
+  std::vector<cas3::Layer> layers(1);
+  layers[0].label = "r4s";
+  layers[0].values.assign(n * cas3::Layer::number_of_values, 0.25f);
+  layers[0].source.assign(n, 1);
+  std::ostringstream out;
+  cas3::write_point_cloud_las(out, cloud.points, cloud.las, std::vector<bool>(n), layers);
+  const std::string bytes = out.str();
+  const cas3::Point_cloud back = cas3::parse_point_cloud(bytes, ".las", "out.las");
+  const cas3::Las_header& h = back.las.header;
+  BOOST_TEST(h.point_format == 8);
+  BOOST_TEST((back.points == cloud.points));
+  for(std::size_t i = 0; i < n; ++i)
+    BOOST_REQUIRE(back.las.records[i].nir == cloud.las.records[i].nir);
+  BOOST_TEST((h.global_encoding & 16) == 16);
+  BOOST_REQUIRE_EQUAL(h.crs.size(), 2u);
+  for(std::size_t k = 0; k < 2; ++k)
+    BOOST_TEST((h.crs[k].user_id == in.crs[k].user_id && h.crs[k].record_id == in.crs[k].record_id &&
+                h.crs[k].data == in.crs[k].data));
+  BOOST_REQUIRE_EQUAL(h.extra_fields.size(), 2u + 1 + 16);
+  BOOST_TEST(h.extra_fields[0].descriptor == in.extra_fields[0].descriptor);
+  BOOST_TEST(h.extra_fields[1].descriptor == in.extra_fields[1].descriptor);
+  BOOST_TEST(h.extra_fields[2].name == "outlier");
+  BOOST_TEST(h.extra_fields[6].name == "H_r4s");
+  BOOST_TEST(h.extra_bytes == 7u + 1 + 61);
+  for(std::size_t i = 0; i < n; ++i)
+    BOOST_REQUIRE(std::equal(cloud.las.extra_bytes.begin() + std::ptrdiff_t(7 * i),
+                             cloud.las.extra_bytes.begin() + std::ptrdiff_t(7 * i + 7),
+                             back.las.extra_bytes.begin() + std::ptrdiff_t(h.extra_bytes * i)));
+  // GeoTIFF keys alone keep the WKT bit clear, as the input has it
+  s.minor = 2;
+  s.format = 3;
+  s.evlr = false;
+  const cas3::Point_cloud geotiff = cas3::parse_point_cloud(las_bytes(s), ".las", "geotiff.las");
+  cas3::Las_output_header carried;
+  cas3::carry_las_input(geotiff.las.header, carried);
+  BOOST_TEST(!carried.wkt);
+  BOOST_TEST(carried.rgb);
+  BOOST_TEST(!carried.nir);
+  BOOST_TEST(carried.crs.size() == 1u);
 }
 
 // Points that do not come from a LAS file: format 6, a power-of-ten scale

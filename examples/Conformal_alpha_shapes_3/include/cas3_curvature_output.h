@@ -352,19 +352,27 @@ inline std::vector<Las_extra_field> las_extra_fields(const std::vector<std::stri
 }
 
 // The point records of a LAS 1.4 file of `header` (las_header_bytes()):
-// per point i, `record(i)` (a Las_record) in point format 6 or 7, its
-// outlier flag and the values of the layers, as las_extra_fields() names
-// them.
-template <class Record>
+// per point i, `record(i)` (a Las_record) in the header's point format, the
+// input's extra-bytes fields that the header carries, from `extra(i)` (the
+// input record's extra bytes, or nullptr when it carries none), its outlier
+// flag and the values of the layers, as las_extra_fields() names them.
+template <class Record, class Extra>
 void write_las_point_records(std::ostream& out, std::size_t n, const Las_output_header& header, Record record,
-                             const std::vector<bool>& outlier, const std::vector<Layer>& layers)
+                             Extra extra, const std::vector<bool>& outlier, const std::vector<Layer>& layers)
 {
-  const std::size_t base = header.rgb ? 36 : 30;
-  const std::size_t row_size = std::size_t(las_output_record_length(header));
+  const int format = las_output_point_format(header);
+  const std::size_t base = std::size_t(las_detail::base_record_length(format));
+  const std::size_t row_size = las_output_record_length(header);
   output_detail::write_rows(out, n, row_size, [&](std::size_t i, output_detail::Row_cursor& row) {
-    char bytes[36];
-    encode_las_record(record(i), header.rgb, bytes);
+    char bytes[38];
+    encode_las_record(record(i), format, bytes);
     row.put_bytes(bytes, base);
+    if(!header.carried.empty())
+    {
+      const char* in = extra(i);
+      for(const Las_extra_bytes_field& f : header.carried)
+        row.put_bytes(in + f.offset, f.size);
+    }
     row.put(std::uint8_t(outlier[i] ? 1 : 0));
     for(const Layer& layer : layers)
     {
@@ -374,21 +382,37 @@ void write_las_point_records(std::ostream& out, std::size_t n, const Las_output_
   });
 }
 
-// The point cloud as LAS 1.4: point format 6, or 7 when the LAS input had
-// colors; the input's records (scaled integers, scale and offset, fields)
-// when `las` holds one per point, else the points written with
-// choose_las_scale(); then the fields of las_extra_fields(), described in
-// the Extra Bytes VLR.
+// The header of the LAS output of points read from `las` (when present)
+// with layers labelled `labels`: las_extra_fields() after what
+// carry_las_input() keeps of the input. Throws std::invalid_argument when
+// the fields do not fit.
+inline Las_output_header las_output_header(const Las_input& las, const std::vector<std::string>& labels)
+{
+  Las_output_header header;
+  header.extra = las_extra_fields(labels);
+  if(!las.present)
+    return header;
+  if(las.extra_bytes.size() != las.records.size() * las.header.extra_bytes)
+    throw std::invalid_argument("LAS output: the input's extra bytes are not " + std::to_string(las.header.extra_bytes)
+                                + " per record");
+  carry_las_input(las.header, header);
+  return header;
+}
+
+// The point cloud as LAS 1.4: point format 6, or 7 (8) when the LAS input
+// had colors (and NIR); the input's records (scaled integers, scale and
+// offset, fields, extra bytes, CRS) when `las` holds one per point, else
+// the points written with choose_las_scale(); then the fields of
+// las_extra_fields(), described in the Extra Bytes VLR.
 template <class Point>
 void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, const Las_input& las,
                            const std::vector<bool>& outlier, const std::vector<Layer>& layers)
 {
-  Las_output_header header;
   std::vector<std::string> labels;
   for(const Layer& layer : layers)
     labels.push_back(layer.label);
-  header.extra = las_extra_fields(labels);
   const bool from_las = las.present && las.records.size() == points.size();
+  Las_output_header header = las_output_header(from_las ? las : Las_input(), labels);
   auto record = [&](std::size_t i) {
     if(from_las)
       return las.records[i];
@@ -398,18 +422,8 @@ void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, 
     r.return_number = r.number_of_returns = 1;
     return r;
   };
-  if(from_las)
-  {
-    const Las_header& in = las.header;
-    header.rgb = las_detail::has_rgb(in.point_format);
-    std::copy(in.scale, in.scale + 3, header.scale);
-    std::copy(in.offset, in.offset + 3, header.offset);
-    header.file_source_id = in.file_source_id;
-    header.global_encoding = in.global_encoding;
-    header.creation_day = in.creation_day;
-    header.creation_year = in.creation_year;
-  }
-  else if(!points.empty())
+  auto extra = [&](std::size_t i) { return las.extra_bytes.data() + i * las.header.extra_bytes; };
+  if(!from_las && !points.empty())
   {
     double low[3], high[3];
     for(int k = 0; k < 3; ++k)
@@ -427,7 +441,8 @@ void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, 
     bounds.add(record(i));
   bounds.set(header);
   out << las_header_bytes(header);
-  write_las_point_records(out, points.size(), header, record, outlier, layers);
+  write_las_point_records(out, points.size(), header, record, extra, outlier, layers);
+  out << las_evlr_bytes(header);
 }
 
 // The CSV: its header line, then append_csv_rows() for each layer.

@@ -10,7 +10,10 @@
 // fields are converted: the 5-bit class and its 3 flags, the scan angle
 // rank in degrees). Coordinates are the record's scaled integers times the
 // header's scale plus its offset, in double. Bytes beyond a format's base
-// size (extra bytes) are skipped; so are VLRs, EVLRs and waveform data.
+// size (extra bytes) are given raw, on request, with their fields as the
+// Extra Bytes VLR describes them; of the VLRs and EVLRs, the coordinate
+// reference system's records are kept (GeoTIFF keys and OGC WKT); the
+// others, and waveform data, are skipped.
 //
 // A bad file throws Las_error (a Read_error of cas3_read_point_cloud.h)
 // with one line naming the file and what is wrong: not a LAS file, an
@@ -18,13 +21,16 @@
 // smaller than its version's, an offset to the point data inside the
 // header or beyond the file, a record length below the format's base size,
 // a scale that is not finite and nonzero, an offset that is not finite, a
-// point count beyond the file. Nothing is read past the end of the file.
+// point count beyond the file, a VLR that runs into the point data, an
+// EVLR beyond the file, an Extra Bytes VLR that does not fit the records.
+// Nothing is read past the end of the file.
 //
 // Las_filter is what LiDAR users filter on: classes, withheld points,
-// first or last returns. write_las_header() and encode_las_record() write
-// LAS 1.4 with point format 6 or 7 and named extra bytes (the Extra Bytes
-// VLR, record id 4 of LASF_Spec), which lidR, PDAL and CloudCompare load as
-// attributes.
+// first or last returns. las_header_bytes() and encode_las_record() write
+// LAS 1.4 with point format 6, 7 or 8 and named extra bytes (the Extra
+// Bytes VLR, record id 4 of LASF_Spec), which lidR, PDAL and CloudCompare
+// load as attributes; a LAS input's own extra bytes and CRS records are
+// carried into it.
 #ifndef CAS3_LAS_H
 #define CAS3_LAS_H
 
@@ -57,6 +63,25 @@ struct Las_error : Read_error
   using Read_error::Read_error;
 };
 
+// A variable length record (VLR, or EVLR of LAS 1.4) kept from a file.
+struct Las_vlr
+{
+  std::string user_id;      // at most 16 characters
+  std::uint16_t record_id = 0;
+  std::string description;  // at most 32 characters
+  std::string data;
+};
+
+// An extra-bytes field of a file's records: its descriptor (the 192 bytes
+// of the Extra Bytes VLR) and the place of its bytes among the record's
+// extra bytes.
+struct Las_extra_bytes_field
+{
+  std::string name;
+  std::string descriptor;
+  std::size_t offset = 0, size = 0;
+};
+
 // What the header says, checked.
 struct Las_header
 {
@@ -74,6 +99,14 @@ struct Las_header
   double offset[3] = {0, 0, 0};
   double min[3] = {0, 0, 0}, max[3] = {0, 0, 0};
   std::uint64_t file_size = 0;
+  std::uint64_t start_of_first_evlr = 0;  // LAS 1.4
+  std::uint32_t number_of_evlrs = 0;
+  // filled by Las_file: the bytes of a record beyond its format's base size,
+  // their fields (an undescribed rest as fields of data type 0), and the
+  // CRS records, VLRs then EVLRs, in file order
+  std::size_t extra_bytes = 0;
+  std::vector<Las_extra_bytes_field> extra_fields;
+  std::vector<Las_vlr> crs;
 };
 
 // A point's fields, in the terms of point formats 6 to 10.
@@ -128,6 +161,87 @@ inline bool has_nir(int f) { return f == 8 || f == 10; }
 
 // The header size of LAS 1.minor.
 inline int header_size_of_version(int minor) { return minor <= 2 ? 227 : (minor == 3 ? 235 : 375); }
+
+// The text of a fixed-size, zero-padded field.
+inline std::string field_text(const char* p, std::size_t size)
+{
+  std::size_t n = 0;
+  while(n < size && p[n] != '\0')
+    ++n;
+  return std::string(p, n);
+}
+
+// The records of a coordinate reference system: GeoKeyDirectoryTag,
+// GeoDoubleParamsTag, GeoAsciiParamsTag and OGC coordinate system WKT.
+inline bool is_crs_record(const std::string& user_id, std::uint16_t record_id)
+{
+  return user_id == "LASF_Projection"
+         && (record_id == 34735 || record_id == 34736 || record_id == 34737 || record_id == 2112);
+}
+
+inline bool is_extra_bytes_record(const std::string& user_id, std::uint16_t record_id)
+{
+  return user_id == "LASF_Spec" && record_id == 4;
+}
+
+// The bytes of an extra-bytes field of data type `type` (1 to 10 scalars,
+// 11 to 30 the deprecated arrays of 2 and 3), -1 for an unknown type; type
+// 0 (undocumented bytes) has the size of its options byte.
+inline int extra_bytes_type_size(int type, int options)
+{
+  static const int scalar[11] = {0, 1, 1, 2, 2, 4, 4, 8, 8, 4, 8};
+  if(type == 0)
+    return options;
+  if(type < 1 || type > 30)
+    return -1;
+  return ((type - 1) / 10 + 1) * scalar[(type - 1) % 10 + 1];
+}
+
+// The fields an Extra Bytes VLR's `payload` describes in records of
+// `extra_bytes` bytes beyond their base size, and a field of data type 0
+// for any undescribed rest. Throws Las_error.
+inline std::vector<Las_extra_bytes_field> extra_bytes_fields(const std::string& payload, std::size_t extra_bytes,
+                                                            const std::string& name)
+{
+  std::vector<Las_extra_bytes_field> fields;
+  if(payload.size() % 192 != 0)
+    throw Las_error(name + ": the Extra Bytes VLR has " + std::to_string(payload.size())
+                    + " bytes, not a multiple of its 192-byte descriptors");
+  std::size_t at = 0;
+  for(std::size_t k = 0; k < payload.size() / 192; ++k)
+  {
+    Las_extra_bytes_field f;
+    f.descriptor = payload.substr(192 * k, 192);
+    f.name = field_text(f.descriptor.data() + 4, 32);
+    const int type = std::uint8_t(f.descriptor[2]), options = std::uint8_t(f.descriptor[3]);
+    const int size = extra_bytes_type_size(type, options);
+    if(size < 0)
+      throw Las_error(name + ": extra-bytes field " + std::to_string(k + 1)
+                      + " of the Extra Bytes VLR has the unknown data type " + std::to_string(type)
+                      + " (0 to 30 are defined)");
+    f.offset = at;
+    f.size = std::size_t(size);
+    at += f.size;
+    if(at > extra_bytes)
+      throw Las_error(name + ": the Extra Bytes VLR describes " + std::to_string(at) + " bytes per point or more, "
+                      "the records have " + std::to_string(extra_bytes) + " beyond their point format's");
+    fields.push_back(f);
+  }
+  // data type 0 (undocumented bytes) holds up to 255 bytes: a longer rest
+  // is cut in such fields
+  for(std::size_t done = at; done < extra_bytes; done += 255)
+  {
+    Las_extra_bytes_field rest;
+    rest.name = "undescribed_extra_bytes";
+    rest.offset = done;
+    rest.size = (std::min)(extra_bytes - done, std::size_t(255));
+    rest.descriptor.assign(192, '\0');
+    rest.descriptor[3] = char(std::uint8_t(rest.size));
+    std::memcpy(&rest.descriptor[4], rest.name.data(), rest.name.size());
+    fields.push_back(rest);
+  }
+  return fields;
+}
 
 inline std::string text(double x)
 {
@@ -223,6 +337,12 @@ inline Las_header parse_las_header(const std::string& bytes, std::uint64_t file_
     if(count != 0)
       h.number_of_points = count;
   }
+  h.extra_bytes = std::size_t(h.record_length - base);
+  if(h.version_minor >= 4)
+  {
+    h.start_of_first_evlr = get<std::uint64_t>(p + 235);
+    h.number_of_evlrs = get<std::uint32_t>(p + 243);
+  }
   const std::uint64_t room = (file_size - h.offset_to_points) / h.record_length;
   if(h.number_of_points > room)
     throw Las_error(name + ": the header announces " + std::to_string(h.number_of_points) + " points of "
@@ -291,9 +411,9 @@ inline Las_record decode_las_record(const char* p, int format)
   return r;
 }
 
-// Writes `r` as a record of point format 6 (30 bytes) or 7 (36 bytes,
-// with RGB) at `p`.
-inline void encode_las_record(const Las_record& r, bool rgb, char* p)
+// Writes `r` as a record of point format 6 (30 bytes), 7 (36 bytes, with
+// RGB) or 8 (38 bytes, with RGB and NIR) at `p`.
+inline void encode_las_record(const Las_record& r, int format, char* p)
 {
   using las_detail::put;
   put(p, r.X);
@@ -308,12 +428,14 @@ inline void encode_las_record(const Las_record& r, bool rgb, char* p)
   put(p + 18, r.scan_angle);
   put(p + 20, r.point_source_id);
   put(p + 22, r.gps_time);
-  if(rgb)
+  if(format >= 7)
   {
     put(p + 30, r.red);
     put(p + 32, r.green);
     put(p + 34, r.blue);
   }
+  if(format == 8)
+    put(p + 36, r.nir);
 }
 
 // A LAS file, its header checked, its records read by range.
@@ -343,10 +465,14 @@ public:
   bool has_rgb() const { return las_detail::has_rgb(m_header.point_format); }
 
   // Replaces `out` by the records first to first + count - 1 (clamped to
-  // the file's). Throws Read_error when the file cannot be read (it shrank).
-  void read(std::uint64_t first, std::uint64_t count, std::vector<Las_record>& out)
+  // the file's), and `extra` (when given) by their extra bytes, the
+  // header's extra_bytes per record. Throws Read_error when the file cannot
+  // be read (it shrank).
+  void read(std::uint64_t first, std::uint64_t count, std::vector<Las_record>& out, std::vector<char>* extra = nullptr)
   {
     out.clear();
+    if(extra)
+      extra->clear();
     if(first >= m_header.number_of_points)
       return;
     count = (std::min)(count, m_header.number_of_points - first);
@@ -362,8 +488,14 @@ public:
       m_in->read(m_buffer.data(), std::streamsize(m_buffer.size()));
       if(!*m_in)
         throw Read_error(m_name + ": read error in point record " + std::to_string(first + done));
+      const std::size_t base = length - m_header.extra_bytes;
       for(std::size_t i = 0; i < n; ++i)
-        out.push_back(decode_las_record(m_buffer.data() + i * length, m_header.point_format));
+      {
+        const char* record = m_buffer.data() + i * length;
+        out.push_back(decode_las_record(record, m_header.point_format));
+        if(extra)
+          extra->insert(extra->end(), record + base, record + length);
+      }
       done += n;
     }
   }
@@ -388,6 +520,87 @@ private:
     if(!*m_in)
       throw Read_error(m_name + ": read error");
     m_header = parse_las_header(head, std::uint64_t(end), m_name);
+    read_records();
+  }
+
+  // The `size` bytes at `at`, within the file (checked by the caller).
+  std::string bytes_at(std::uint64_t at, std::uint64_t size)
+  {
+    std::string b(std::size_t(size), '\0');
+    m_in->clear();
+    m_in->seekg(std::streamoff(at));
+    m_in->read(&b[0], std::streamsize(size));
+    if(!*m_in)
+      throw Read_error(m_name + ": read error");
+    return b;
+  }
+
+  // Keeps the record of `head` (a VLR's 54 bytes or an EVLR's 60) whose
+  // payload of `length` bytes is at `at` when it is a CRS record or the
+  // Extra Bytes VLR.
+  void keep_record(const std::string& head, std::uint64_t at, std::uint64_t length, std::string& extra_bytes_payload,
+                   bool& has_extra_bytes)
+  {
+    using las_detail::get;
+    Las_vlr v;
+    v.user_id = las_detail::field_text(head.data() + 2, 16);
+    v.record_id = get<std::uint16_t>(head.data() + 18);
+    v.description = las_detail::field_text(head.data() + head.size() - 32, 32);
+    if(las_detail::is_crs_record(v.user_id, v.record_id))
+    {
+      v.data = bytes_at(at, length);
+      m_header.crs.push_back(v);
+    }
+    else if(las_detail::is_extra_bytes_record(v.user_id, v.record_id) && !has_extra_bytes)
+    {
+      extra_bytes_payload = bytes_at(at, length);
+      has_extra_bytes = true;
+    }
+  }
+
+  // The VLRs between the header and the point data, and the EVLRs after
+  // the points: the CRS records and the extra-bytes fields.
+  void read_records()
+  {
+    using las_detail::get;
+    Las_header& h = m_header;
+    std::string extra_bytes_payload;
+    bool has_extra_bytes = false;
+    std::uint64_t at = h.header_size;
+    for(std::uint32_t k = 0; k < h.number_of_vlrs; ++k)
+    {
+      const std::string where = m_name + ": VLR " + std::to_string(k + 1) + " of " + std::to_string(h.number_of_vlrs);
+      if(at + 54 > h.offset_to_points)
+        throw Las_error(where + " runs into the point data (at " + std::to_string(h.offset_to_points) + ")");
+      const std::string head = bytes_at(at, 54);
+      const std::uint16_t length = get<std::uint16_t>(head.data() + 20);
+      if(at + 54 + length > h.offset_to_points)
+        throw Las_error(where + " runs into the point data (at " + std::to_string(h.offset_to_points) + ")");
+      keep_record(head, at + 54, length, extra_bytes_payload, has_extra_bytes);
+      at += 54 + length;
+    }
+    if(h.number_of_evlrs > 0)
+    {
+      const std::uint64_t points_end = h.offset_to_points + h.number_of_points * h.record_length;
+      at = h.start_of_first_evlr;
+      if(at < points_end)
+        throw Las_error(m_name + ": the first EVLR (at " + std::to_string(at) + ") is not after the point data (which "
+                        "ends at " + std::to_string(points_end) + ")");
+      for(std::uint32_t k = 0; k < h.number_of_evlrs; ++k)
+      {
+        const std::string where
+          = m_name + ": EVLR " + std::to_string(k + 1) + " of " + std::to_string(h.number_of_evlrs);
+        if(at > h.file_size || h.file_size - at < 60)
+          throw Las_error(where + " is beyond the end of the file (" + std::to_string(h.file_size) + " bytes)");
+        const std::string head = bytes_at(at, 60);
+        const std::uint64_t length = get<std::uint64_t>(head.data() + 20);
+        if(length > h.file_size - at - 60)
+          throw Las_error(where + " is beyond the end of the file (" + std::to_string(h.file_size) + " bytes)");
+        keep_record(head, at + 60, length, extra_bytes_payload, has_extra_bytes);
+        at += 60 + length;
+      }
+    }
+    h.extra_fields = las_detail::extra_bytes_fields(extra_bytes_payload, h.extra_bytes, m_name);
   }
 
   std::string m_name;
@@ -478,73 +691,171 @@ struct Las_extra_field
   bool is_float = true;     // else unsigned char
 };
 
-// What write_las_header() writes: LAS 1.4, point format 6 or 7.
+// What las_header_bytes() writes: LAS 1.4, point format 6, 7 (with RGB)
+// or 8 (with RGB and NIR).
 struct Las_output_header
 {
   bool rgb = false;  // point format 7 (else 6)
+  bool nir = false;  // point format 8 (with rgb)
   double scale[3] = {0.001, 0.001, 0.001};
   double offset[3] = {0, 0, 0};
   double min[3] = {0, 0, 0}, max[3] = {0, 0, 0};
   std::uint64_t number_of_points = 0;
   std::uint64_t points_by_return[15] = {};
   std::uint16_t file_source_id = 0;
-  std::uint16_t global_encoding = 0;  // bit 0 (GPS time type) kept from the input; bit 4 (WKT) set
+  std::uint16_t global_encoding = 0;  // bits 0 (GPS time type) and 3 (synthetic return numbers) are written
+  bool wkt = true;                    // bit 4: the CRS is WKT (or there is none)
   std::uint16_t creation_day = 0, creation_year = 0;
+  // the input's extra-bytes fields carried, before `extra` in the records
+  std::vector<Las_extra_bytes_field> carried;
   std::vector<Las_extra_field> extra;
+  // the input's CRS records: VLRs, or EVLRs when longer than a VLR holds
+  std::vector<Las_vlr> crs;
 };
 
-inline int las_extra_bytes_per_point(const Las_output_header& h)
+inline int las_output_point_format(const Las_output_header& h) { return h.nir ? 8 : (h.rgb ? 7 : 6); }
+
+inline std::size_t las_extra_bytes_per_point(const Las_output_header& h)
 {
-  int n = 0;
+  std::size_t n = 0;
+  for(const Las_extra_bytes_field& f : h.carried)
+    n += f.size;
   for(const Las_extra_field& f : h.extra)
     n += f.is_float ? 4 : 1;
   return n;
 }
 
-inline int las_output_record_length(const Las_output_header& h)
+inline std::size_t las_output_record_length(const Las_output_header& h)
 {
-  return (h.rgb ? 36 : 30) + las_extra_bytes_per_point(h);
+  return std::size_t(las_detail::base_record_length(las_output_point_format(h))) + las_extra_bytes_per_point(h);
 }
 
 // Throws std::invalid_argument when the fields do not fit the Extra Bytes
-// VLR: a name of more than 32 characters, more than 341 fields.
-inline void check_las_extra_fields(const std::vector<Las_extra_field>& extra)
+// VLR: a name of more than 32 characters, more than 341 fields (with
+// `carried` of the input's).
+inline void check_las_extra_fields(const std::vector<Las_extra_field>& extra, std::size_t carried = 0)
 {
-  if(extra.size() > 341)
-    throw std::invalid_argument("LAS output: " + std::to_string(extra.size())
-                                + " extra-bytes fields, the Extra Bytes VLR holds at most 341 (21 layers)");
+  if(extra.size() + carried > 341)
+    throw std::invalid_argument("LAS output: " + std::to_string(extra.size()) + " extra-bytes fields"
+                                + (carried ? " and " + std::to_string(carried) + " of the input" : std::string())
+                                + ", the Extra Bytes VLR holds at most 341 (21 layers)");
   for(const Las_extra_field& f : extra)
     if(f.name.empty() || f.name.size() > 32)
       throw std::invalid_argument("LAS output: the field name '" + f.name
                                   + "' does not fit the Extra Bytes VLR (1 to 32 characters)");
 }
 
-// The header and the Extra Bytes VLR: the bytes before the point records.
+// What the output keeps of a LAS input `in`: its point format's colors
+// (RGB, NIR), scale, offset, file source id, GPS time type, creation date,
+// CRS records (the WKT bit as the input's, set when it has no GeoTIFF
+// keys) and extra-bytes fields, but those named as a field of `out.extra`,
+// whose new values replace them. Throws std::invalid_argument when the
+// fields do not fit a record or the Extra Bytes VLR.
+inline void carry_las_input(const Las_header& in, Las_output_header& out)
+{
+  out.rgb = las_detail::has_rgb(in.point_format);
+  out.nir = las_detail::has_nir(in.point_format);
+  std::copy(in.scale, in.scale + 3, out.scale);
+  std::copy(in.offset, in.offset + 3, out.offset);
+  out.file_source_id = in.file_source_id;
+  out.global_encoding = in.global_encoding;
+  out.creation_day = in.creation_day;
+  out.creation_year = in.creation_year;
+  out.crs = in.crs;
+  const bool geotiff = std::any_of(in.crs.begin(), in.crs.end(), [](const Las_vlr& v) { return v.record_id == 34735; });
+  out.wkt = (in.global_encoding & 16) != 0 || !geotiff;
+  out.carried.clear();
+  for(const Las_extra_bytes_field& f : in.extra_fields)
+    if(std::none_of(out.extra.begin(), out.extra.end(), [&](const Las_extra_field& e) { return e.name == f.name; }))
+      out.carried.push_back(f);
+  check_las_extra_fields(out.extra, out.carried.size());
+  if(las_output_record_length(out) > 65535)
+    throw std::invalid_argument("LAS output: records of " + std::to_string(las_output_record_length(out))
+                                + " bytes with the input's extra bytes, a LAS record holds at most 65535");
+}
+
+namespace las_detail {
+
+inline void put_text(char* at, const std::string& s, std::size_t size)
+{
+  std::memcpy(at, s.data(), (std::min)(s.size(), size));
+}
+
+inline bool is_evlr(const Las_vlr& v) { return v.data.size() > 65535; }
+
+// A VLR's 54-byte header and payload, or an EVLR's 60.
+inline std::string record_bytes(const Las_vlr& v, bool extended)
+{
+  const std::size_t head = extended ? 60 : 54;
+  std::string b(head, '\0');
+  put_text(&b[2], v.user_id, 16);
+  put(&b[18], v.record_id);
+  if(extended)
+    put(&b[20], std::uint64_t(v.data.size()));
+  else
+    put(&b[20], std::uint16_t(v.data.size()));
+  put_text(&b[head - 32], v.description, 32);
+  return b + v.data;
+}
+
+} // namespace las_detail
+
+// The header and the VLRs (the Extra Bytes VLR, the CRS records): the
+// bytes before the point records.
 inline std::string las_header_bytes(const Las_output_header& h)
 {
   using las_detail::put;
-  check_las_extra_fields(h.extra);
-  const std::size_t vlr_payload = 192 * h.extra.size();
-  const std::size_t offset_to_points = 375 + (h.extra.empty() ? 0 : 54 + vlr_payload);
-  std::string bytes(offset_to_points, '\0');
+  using las_detail::put_text;
+  check_las_extra_fields(h.extra, h.carried.size());
+  std::string vlrs;
+  std::uint32_t number_of_vlrs = 0, number_of_evlrs = 0;
+  if(!h.carried.empty() || !h.extra.empty())
+  {
+    Las_vlr v;
+    v.user_id = "LASF_Spec";
+    v.record_id = 4;
+    v.description = h.carried.empty() ? "curvature values per point" : "input's and curvature values per point";
+    for(const Las_extra_bytes_field& f : h.carried)
+      v.data += f.descriptor;
+    for(const Las_extra_field& f : h.extra)
+    {
+      std::string d(192, '\0');
+      d[2] = char(f.is_float ? 9 : 1);  // data type: float, unsigned char
+      put_text(&d[4], f.name, 32);
+      put_text(&d[160], f.description, 32);
+      v.data += d;
+    }
+    vlrs += las_detail::record_bytes(v, false);
+    ++number_of_vlrs;
+  }
+  for(const Las_vlr& v : h.crs)
+  {
+    if(las_detail::is_evlr(v))
+      ++number_of_evlrs;
+    else
+    {
+      vlrs += las_detail::record_bytes(v, false);
+      ++number_of_vlrs;
+    }
+  }
+  const std::size_t offset_to_points = 375 + vlrs.size();
+  const std::size_t record_length = las_output_record_length(h);
+  std::string bytes(375, '\0');
   char* p = &bytes[0];
   std::memcpy(p, "LASF", 4);
   put(p + 4, h.file_source_id);
-  put(p + 6, std::uint16_t((h.global_encoding & 1) | 16));
+  put(p + 6, std::uint16_t((h.global_encoding & 9) | (h.wkt ? 16 : 0)));
   p[24] = 1;
   p[25] = 4;
-  auto put_text = [](char* at, const std::string& s, std::size_t size) {
-    std::memcpy(at, s.data(), (std::min)(s.size(), size));
-  };
   put_text(p + 26, "conformal_curvature", 32);
   put_text(p + 58, "Conformal_alpha_shapes_3", 32);
   put(p + 90, h.creation_day);
   put(p + 92, h.creation_year);
   put(p + 94, std::uint16_t(375));
   put(p + 96, std::uint32_t(offset_to_points));
-  put(p + 100, std::uint32_t(h.extra.empty() ? 0 : 1));
-  p[104] = char(h.rgb ? 7 : 6);
-  put(p + 105, std::uint16_t(las_output_record_length(h)));
+  put(p + 100, number_of_vlrs);
+  p[104] = char(las_output_point_format(h));
+  put(p + 105, std::uint16_t(record_length));
   // the legacy counts stay 0: point formats 6 to 10 have none
   for(int k = 0; k < 3; ++k)
   {
@@ -553,24 +864,24 @@ inline std::string las_header_bytes(const Las_output_header& h)
     put(p + 179 + 16 * k, h.max[k]);
     put(p + 187 + 16 * k, h.min[k]);
   }
+  if(number_of_evlrs > 0)
+  {
+    put(p + 235, std::uint64_t(offset_to_points + h.number_of_points * record_length));
+    put(p + 243, number_of_evlrs);
+  }
   put(p + 247, h.number_of_points);
   for(int k = 0; k < 15; ++k)
     put(p + 255 + 8 * k, h.points_by_return[k]);
-  if(!h.extra.empty())
-  {
-    char* v = p + 375;
-    put_text(v + 2, "LASF_Spec", 16);
-    put(v + 18, std::uint16_t(4));
-    put(v + 20, std::uint16_t(vlr_payload));
-    put_text(v + 22, "curvature values per point", 32);
-    for(std::size_t i = 0; i < h.extra.size(); ++i)
-    {
-      char* d = v + 54 + 192 * i;
-      d[2] = char(h.extra[i].is_float ? 9 : 1);  // data type: float, unsigned char
-      put_text(d + 4, h.extra[i].name, 32);
-      put_text(d + 160, h.extra[i].description, 32);
-    }
-  }
+  return bytes + vlrs;
+}
+
+// The EVLRs after the point records: the CRS records longer than a VLR holds.
+inline std::string las_evlr_bytes(const Las_output_header& h)
+{
+  std::string bytes;
+  for(const Las_vlr& v : h.crs)
+    if(las_detail::is_evlr(v))
+      bytes += las_detail::record_bytes(v, true);
   return bytes;
 }
 

@@ -47,7 +47,8 @@ namespace cas3 {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Read_kernel;
 
 // What a LAS input adds: its header, the filters and what they kept, and
-// the records of the points kept (when asked for), in file order.
+// the records of the points kept (when asked for), in file order, with
+// their extra bytes.
 struct Las_input
 {
   bool present = false;
@@ -55,6 +56,7 @@ struct Las_input
   Las_filter filter;
   Las_filter_counts counts;
   std::vector<Las_record> records;  // one per point, or empty
+  std::vector<char> extra_bytes;    // header.extra_bytes per record
 };
 
 struct Point_cloud
@@ -510,16 +512,21 @@ inline Point_cloud read_las(Las_file& file, const Las_filter& filter, bool keep_
   cloud.las.filter = filter;
   const std::vector<bool> class_kept = las_classes_kept(filter);
   std::vector<Las_record> chunk;
+  std::vector<char> extra;
+  const std::size_t extra_size = file.header().extra_bytes;
   const std::uint64_t n = file.number_of_points();
   if(!filter.active())
   {
     cloud.points.reserve(std::size_t(n));
     if(keep_records)
+    {
       cloud.las.records.reserve(std::size_t(n));
+      cloud.las.extra_bytes.reserve(std::size_t(n) * extra_size);
+    }
   }
   for(std::uint64_t first = 0; first < n; first += chunk.size())
   {
-    file.read(first, std::uint64_t(1) << 16, chunk);
+    file.read(first, std::uint64_t(1) << 16, chunk, keep_records ? &extra : nullptr);
     for(std::size_t i = 0; i < chunk.size(); ++i)
     {
       if(!keep_las_record(chunk[i], filter, class_kept, cloud.las.counts))
@@ -530,7 +537,11 @@ inline Point_cloud read_las(Las_file& file, const Las_filter& filter, bool keep_
                          + ": coordinate is NaN or infinite (scale and offset beyond double's range)");
       cloud.points.emplace_back(p[0], p[1], p[2]);
       if(keep_records)
+      {
         cloud.las.records.push_back(chunk[i]);
+        cloud.las.extra_bytes.insert(cloud.las.extra_bytes.end(), extra.begin() + std::ptrdiff_t(i * extra_size),
+                                     extra.begin() + std::ptrdiff_t((i + 1) * extra_size));
+      }
     }
   }
   if(cloud.points.empty() && n > 0)

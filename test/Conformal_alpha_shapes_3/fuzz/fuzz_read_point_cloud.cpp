@@ -4,9 +4,11 @@
 // finite points (and as many normals or none; for LAS, a record per point)
 // or throw cas3::Read_error with a one-line message. A LAS file is also
 // read in chunks (Las_file::read) of 1 to 17 records (by the input size),
-// which must give the same records.
+// which must give the same records and extra bytes, and its extra-bytes
+// fields must lie within the records' extra bytes.
 #include "cas3_read_point_cloud.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -31,14 +33,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::abort();
     if(extension == ".las")
     {
-      if(!cloud.las.present || cloud.las.records.size() != cloud.points.size())
+      const cas3::Las_header& header = cloud.las.header;
+      if(!cloud.las.present || cloud.las.records.size() != cloud.points.size()
+         || cloud.las.extra_bytes.size() != cloud.points.size() * header.extra_bytes)
         std::abort();
+      for(const cas3::Las_extra_bytes_field& f : header.extra_fields)
+        if(f.offset + f.size > header.extra_bytes || f.descriptor.size() != 192)
+          std::abort();
       cas3::Las_file file(bytes, "fuzz.las");
       const std::uint64_t chunk = 1 + size % 17;
       std::vector<cas3::Las_record> records;
+      std::vector<char> extra;
       for(std::uint64_t first = 0; first < file.number_of_points(); first += chunk)
       {
-        file.read(first, chunk, records);
+        file.read(first, chunk, records, &extra);
+        if(extra.size() != records.size() * header.extra_bytes
+           || !std::equal(extra.begin(), extra.end(),
+                          cloud.las.extra_bytes.begin() + std::ptrdiff_t(first * header.extra_bytes)))
+          std::abort();
         for(std::size_t k = 0; k < records.size(); ++k)
         {
           const cas3::Las_record& a = records[k];
