@@ -151,6 +151,14 @@ def ca_atoms(pdb, chain):
     return atoms
 
 
+def common_ca_atoms(pdb, chain_a, chain_b):
+    """The CA atoms of the residues numbered alike in both chains: two (N, 3) arrays, row by row the same
+    residue, to superpose the chains by."""
+    ca_a, ca_b = ca_atoms(pdb, chain_a), ca_atoms(pdb, chain_b)
+    common = sorted(set(ca_a) & set(ca_b))
+    return np.array([ca_a[k] for k in common]), np.array([ca_b[k] for k in common])
+
+
 def atoms(pdb, chains):
     """Centres, radii and chains of the atoms molecular_surface_points keeps by default (no hydrogens,
     no waters, first alternate location), of the given chains."""
@@ -299,10 +307,7 @@ def main():
         pb, nb, vb, xyz_b = surface(args.build, args.work, pdb, chain_b)
         la, ca_normals = layers_from_ply(va)
         lb, cb_normals = layers_from_ply(vb)
-        ca_a, ca_b = ca_atoms(pdb, chain_a), ca_atoms(pdb, chain_b)
-        common = sorted(set(ca_a) & set(ca_b))
-        ca_a = np.array([ca_a[k] for k in common])
-        ca_b = np.array([ca_b[k] for k in common])
+        ca_a, ca_b = common_ca_atoms(pdb, chain_a, chain_b)
         r_true, t_true = m.fit_rigid(ca_a, ca_b)  # A onto B: the true places of A's centres on B
         centres = m.farthest_point_sample(pa, CENTRES)
         candidates = m.farthest_point_sample(pb, CANDIDATES)
