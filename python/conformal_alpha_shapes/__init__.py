@@ -637,16 +637,19 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
 
 def front_closing_values(points, normals=None, *, denoise="auto", denoise_neighbors=None, threads=None,
                          progress=None, spacing=None, noise=None):
-    """Per point, the closing value of the advancing front: a tile's share of the automatic scale.
+    """Per point, the local closing value of the advancing front: a tile's share of the automatic scale.
 
     The steps of ``multiscale_curvatures`` up to the front (the same checks,
     outliers, noise decisions, smoothing and shape, with the same keywords),
-    then for each point the largest conformal value among the faces of the
-    front at its vertex: the smallest scale at which its whole umbrella is
-    in the surface. The automatic scale "auto" (with extraction "front") is
-    the 0.99 quantile of the values that are not NaN, so the scale of a
-    cloud split into tiles is that quantile over the tiles' values pooled
-    (each point counted in one tile only).
+    then for each point the upper quartile (the 19th smallest) of the
+    closing values (the largest conformal value among the faces of the front
+    at a vertex: the smallest scale at which its whole umbrella is in the
+    surface) of its vertex and the 23 nearest vertices of the front. The
+    automatic scale "auto" (with extraction "front") is the mean of the
+    sorted values that are not NaN of ranks 0.99 n to 0.999 n (a trimmed
+    tail: no single value decides it), so the scale of a cloud split
+    into tiles is that mean over the tiles' values pooled (each point
+    counted in one tile only).
 
     Returns:
         (N,) float64: NaN for outliers, for points the front does not reach

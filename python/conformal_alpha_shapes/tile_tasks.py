@@ -159,7 +159,7 @@ def tile_shape(folder, tile, has_normals, job):
 
 
 def tile_closing(folder, tile, has_normals, job, shape=None):
-    """Writes the sorted closing values of a tile's core points (of ``shape``,
+    """Writes the sorted local closing values of a tile's core points (of ``shape``,
     held on this worker, or of a shape built here); returns their number."""
     started = time.monotonic()
     held = shape is not None

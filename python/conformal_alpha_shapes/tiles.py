@@ -140,6 +140,24 @@ def _kth_smallest(paths, k):
     return _key_value(lo)
 
 
+def _scale_of_closing_values(paths, coverage):
+    """``scale_of_closing_values()`` of the C++ library over the values of
+    sorted ``.npy`` files pooled, to the bit: the mean, summed in increasing
+    order, of the pooled values of ranks ``coverage n`` up to, not including,
+    ``(coverage + 0.9 (1 - coverage)) n``; only the values from the first of
+    them up are read."""
+    arrays = [a for a in (np.load(path, mmap_mode="r") for path in paths) if len(a)]
+    n = sum(len(a) for a in arrays)
+    if n == 0:
+        return float("inf")
+    first = min(n - 1, int(coverage * n))
+    last = max(first + 1, min(n, int((coverage + 0.9 * (1 - coverage)) * n)))
+    start = _kth_smallest(paths, first)
+    below = sum(int(np.searchsorted(a, start, side="left")) for a in arrays)
+    tail = np.sort(np.concatenate([a[int(np.searchsorted(a, start, side="left")):] for a in arrays]))
+    return float(np.cumsum(tail[first - below:last - below])[-1] / (last - first))
+
+
 def _arguments_hash(input_path, options):
     """What makes two runs the same: the input file (path, size, time) and the options."""
     stat = os.stat(input_path)
@@ -397,8 +415,9 @@ def _global_noise(client, cloud, output, tiles, quiet):
 
 
 def _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet):
-    """The automatic scale of the whole cloud: the 0.99 quantile of the core
-    points' closing values of all tiles pooled (exact: one run's rule)."""
+    """The automatic scale of the whole cloud: the scale of the core points'
+    local closing values of all tiles pooled (one run's rule, the same mean
+    over the same window of the tail)."""
     if "a" in manifest:
         return manifest["a"]
     tiles = manifest["tiles"]
@@ -410,9 +429,8 @@ def _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet):
     _run_tasks(client, tile_tasks.tile_closing,
                [(t, (output, t, cloud.has_normals, job, shapes.get(t))) for t in range(tiles)],
                "closing values", cloud.count, quiet, done)
-    n = sum(counts.values())
-    k = min(n - 1, int(COVERAGE * n))
-    a = _kth_smallest([os.path.join(output, "tiles", f"closing_{t:05d}.npy") for t in range(tiles)], k)
+    a = _scale_of_closing_values([os.path.join(output, "tiles", f"closing_{t:05d}.npy") for t in range(tiles)],
+                                 COVERAGE)
     manifest.update(a=a, closing_stats={str(t): {"seconds": v["seconds"], "memory": v["memory"]}
                                         for t, v in stats.items()})
     save()

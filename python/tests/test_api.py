@@ -66,16 +66,17 @@ def test_spacing_and_noise_of_a_larger_run():
 
 
 def test_front_closing_values_give_the_automatic_scale():
-    """Their 0.99 quantile is the automatic scale (tiled runs pool them over tiles)."""
+    """The mean of their ranks 0.99 n to 0.999 n is the automatic scale (tiled runs pool them over tiles)."""
     points, _ = fibonacci_sphere(3000)
     points = np.vstack([points, points[:5]])  # coincident points count once
     closing = cas.front_closing_values(points)
     assert closing.shape == (3005,) and np.isnan(closing[3000:]).all()
     values = np.sort(closing[~np.isnan(closing)])
-    k = min(len(values) - 1, int(0.99 * len(values)))
-    assert values[k] == cas.multiscale_curvatures(points, radii=("4s",))["r4s"].a
+    window = values[int(0.99 * len(values)):int(0.999 * len(values))]
+    a = cas.multiscale_curvatures(points, radii=("4s",))["r4s"].a
+    assert float(np.cumsum(window)[-1] / len(window)) == a
     # the shape of the points as given (not recentered): the same to rounding
-    assert values[k] == pytest.approx(cas.ConformalAlphaShape(points[:3000]).suggest_scale(), rel=1e-12)
+    assert a == pytest.approx(cas.ConformalAlphaShape(points[:3000]).suggest_scale(), rel=1e-12)
 
 
 def test_given_inward_normals_are_followed():
@@ -116,7 +117,8 @@ def test_conformal_alpha_shape():
     vertices, faces, index = shape.surface()
     assert vertices.dtype == np.float64 and faces.dtype == np.int64 and index.dtype == np.int64
     # at the automatic scale 99% of the umbrellas are whole: a few small holes
-    assert len(vertices) == 2000 and 0.99 * (2 * 2000 - 4) <= len(faces) < 2 * 2000 - 4
+    # (a vertex where two fans of faces meet is written once per fan)
+    assert np.array_equal(np.unique(index), np.arange(2000)) and 0.99 * (2 * 2000 - 4) <= len(faces) < 2 * 2000 - 4
     assert np.array_equal(vertices, points[index])
     vertices, faces, index = shape.surface(1.5 * a)
     assert len(faces) == 2 * 2000 - 4  # closed: V - E + F = 2

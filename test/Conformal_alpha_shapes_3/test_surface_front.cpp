@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <string>
@@ -64,6 +65,30 @@ BOOST_AUTO_TEST_SUITE(surface_front)
 // its faces: on an edge, the first triangle with the second, the third with
 // the fourth, and a fifth is left with a border there; around a vertex of
 // high degree too.
+// The automatic scale is a trimmed mean of the tail: at coverage 0.99 the
+// values of ranks 0.99 n to 0.999 n, so that the largest values (or any
+// single one) do not decide it.
+BOOST_AUTO_TEST_CASE(scale_of_closing_values_is_a_trimmed_mean_of_the_tail)
+{
+  std::vector<double> values;
+  for(int v = 1000; v >= 1; --v)
+    values.push_back(v);
+  values.push_back(std::numeric_limits<double>::quiet_NaN());
+  BOOST_TEST(CAS3::scale_of_closing_values(values, 0.99) == 995.0);  // ranks 990 to 998
+  BOOST_TEST(CAS3::scale_of_closing_values(values, 1.0) == 1000);
+  BOOST_TEST(CAS3::scale_of_closing_values(values, 0.9) == 945.5);   // ranks 900 to 989
+  std::vector<double> moved = values;
+  moved[0] = 1e9;  // the largest, trimmed
+  BOOST_TEST(CAS3::scale_of_closing_values(moved, 0.99) == 995.0);
+  moved[500] = 995.5;  // one value from the middle into the tail
+  BOOST_TEST(CAS3::scale_of_closing_values(moved, 0.99) == 995.5);
+  BOOST_TEST(CAS3::scale_of_closing_values({std::numeric_limits<double>::quiet_NaN()}, 0.99)
+             == std::numeric_limits<double>::infinity());
+  BOOST_TEST(CAS3::scale_of_closing_values({3.0}, 0.99) == 3.0);
+  BOOST_CHECK_THROW(CAS3::scale_of_closing_values(values, 0.0), std::invalid_argument);
+  BOOST_CHECK_THROW(CAS3::scale_of_closing_values(values, 1.5), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
 {
   CAS3::internal::Advancing_front_soup soup;
@@ -411,12 +436,15 @@ BOOST_AUTO_TEST_CASE(one_thread_gives_the_same_soups)
     const double a = front.suggest_scale();
     const CAS3::internal::Advancing_front_soup pruned = CAS3::internal::pruned_soup(soup, a);
     CAS3::internal::Advancing_front_soup one_soup, one_pruned;
+    double one_a = 0;
     tbb::task_arena(1).execute([&]() {
       one_soup = CAS3::internal::conformal_front_soup(cas);
       one_pruned = CAS3::internal::pruned_soup(one_soup, a);
+      one_a = front.suggest_scale();
     });
     BOOST_TEST_CONTEXT(cloud.name)
     {
+      BOOST_TEST(one_a == a);
       for(const auto& pair : {std::make_pair(&soup, &one_soup), std::make_pair(&pruned, &one_pruned)})
       {
         const CAS3::internal::Advancing_front_soup &threads = *pair.first, &one = *pair.second;

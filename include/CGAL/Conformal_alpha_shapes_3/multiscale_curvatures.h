@@ -203,16 +203,16 @@ public:
     return m_suggested;
   }
 
-  /// Per input point, the closing value of its vertex in the advancing
-  /// front grown once (`Surface_front::closing_values()`), held by the
-  /// first of the input points a vertex stands for (coincident points share
-  /// a vertex); NaN for the others, for outliers and for points the front
-  /// does not reach. The automatic scale with `ADVANCING_FRONT` is the 0.99
-  /// quantile of the values that are not NaN.
+  /// Per input point, the local closing value of its vertex in the
+  /// advancing front grown once (`Surface_front::local_closing_values()`),
+  /// held by the first of the input points a vertex stands for (coincident
+  /// points share a vertex); NaN for the others, for outliers and for points
+  /// the front does not reach. The automatic scale with `ADVANCING_FRONT` is
+  /// `scale_of_closing_values()` of these with coverage 0.99.
   std::vector<double> closing_values() const
   {
     require_shape("closing_values");
-    return internal::by_first_input_point(front().closing_values(), m_shape, m_input);
+    return internal::by_first_input_point(front().local_closing_values(), m_shape, m_input);
   }
 
   /// Replaces `surface` with the surface at scale `a` (`extract_surface()`),

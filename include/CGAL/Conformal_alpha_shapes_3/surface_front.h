@@ -5,6 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_SURFACE_FRONT_H
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/conformal_front.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/orient_surface_parts.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_output_maps.h>
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
@@ -12,6 +13,11 @@
 #include <CGAL/Conformal_alpha_shapes_3/surface_report.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -23,6 +29,37 @@
 
 namespace CGAL {
 namespace Conformal_alpha_shapes_3 {
+
+/*!
+\ingroup PkgConformalAlphaShapes3Surface
+
+The automatic scale of `Surface_front::suggest_scale()` from (local)
+closing values: the mean of the values above their `coverage` quantile
+less the largest tenth of those, a trimmed tail: with `n` values (NaN left
+out) sorted, the values of ranks from `floor(coverage * n)` up to, not
+including, `floor((coverage + 0.9 * (1 - coverage)) * n)` (at least one),
+summed in increasing order. A mean over the tail rather than one quantile, so that no
+single value decides it. Infinity when every value is NaN.
+
+\throws std::invalid_argument when `coverage` is outside `(0, 1]`
+*/
+inline double scale_of_closing_values(std::vector<double> values, double coverage)
+{
+  if(!(coverage > 0 && coverage <= 1))
+    throw std::invalid_argument("scale_of_closing_values: coverage must be in (0, 1]");
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return std::isnan(v); }), values.end());
+  if(values.empty())
+    return std::numeric_limits<double>::infinity();
+  std::sort(values.begin(), values.end());
+  const double n = double(values.size());
+  const std::size_t first = (std::min)(values.size() - 1, std::size_t(coverage * n));
+  const std::size_t last =
+    (std::max)(first + 1, (std::min)(values.size(), std::size_t((coverage + 0.9 * (1 - coverage)) * n)));
+  double sum = 0;
+  for(std::size_t k = first; k < last; ++k)
+    sum += values[k];
+  return sum / double(last - first);
+}
 
 /*!
 \ingroup PkgConformalAlphaShapes3Surface
@@ -63,16 +100,20 @@ public:
   /*!
   The automatic scale: the smallest `a` at which the surface covers the
   points. Each vertex of the front needs the largest conformal value among
-  its faces for its whole umbrella to be in the complex; the scale returned
-  is the `coverage` quantile of those values over the vertices. At that
-  scale, that share of the surface's vertices has its full umbrella, and
-  the rest (a border that would need larger facets, gaps in the sampling) is
-  left as a border rather than bridged. On samples of closed or open
-  surfaces, clean or noisy (after denoising), the surface at this scale
-  holds over 99% of the points (the manual gives the measurements). It
-  fails where the sample does not describe a surface at all (a volume of
-  points, scattered noise): then the front itself is poor, and so is the scale.
-  Infinity for an empty front.
+  its faces (its closing value) for its whole umbrella to be in the
+  complex; the scale returned is `scale_of_closing_values()` of the local
+  closing values (`local_closing_values()`) with this `coverage`: about
+  the `coverage` quantile of the closing values, read off their spatially
+  smoothed upper tail, so that a few vertices whose values a near tie of
+  the front's growth decided (rounding under a rigid motion of the input)
+  do not move it. At that scale, about that share of the surface's
+  vertices has its full umbrella, and the rest (a border that would need
+  larger facets, gaps in the sampling) is left as a border rather than
+  bridged. On samples of closed or open surfaces, clean or noisy (after
+  denoising), the surface at this scale holds over 99% of the points (the
+  manual gives the measurements). It fails where the sample does not
+  describe a surface at all (a volume of points, scattered noise): then the
+  front itself is poor, and so is the scale. Infinity for an empty front.
 
   \throws std::invalid_argument when `coverage` is outside `(0, 1]`
   */
@@ -80,26 +121,14 @@ public:
   {
     if(!(coverage > 0 && coverage <= 1))
       throw std::invalid_argument("suggest_scale: coverage must be in (0, 1]");
-    std::vector<double> closing;
-    closing.reserve(m_soup.shape_vertex.size());
-    for(double value : closing_values())
-      if(!std::isnan(value))
-        closing.push_back(value);
-    if(closing.empty())
-      return std::numeric_limits<double>::infinity();
-    const std::size_t k = (std::min)(closing.size() - 1, std::size_t(coverage * double(closing.size())));
-    std::nth_element(closing.begin(), closing.begin() + std::ptrdiff_t(k), closing.end());
-    return closing[k];
+    return scale_of_closing_values(local_closing_values(), coverage);
   }
 
   /*!
   The closing value of every vertex of the shape, by `vertex_index()`: the
   largest conformal value among its faces of the front, the smallest scale
   at which its whole umbrella is in the surface; NaN for the vertices the
-  front does not reach. `suggest_scale(coverage)` is the `coverage`
-  quantile of the values that are not NaN, so the automatic scale of a
-  sample split into pieces (tiles with a halo, the manual's "Tiled
-  Processing on Dask") is that quantile over the pieces' values pooled.
+  front does not reach.
   */
   std::vector<double> closing_values() const
   {
@@ -110,6 +139,51 @@ public:
       for(std::size_t s : m_soup.triangles[t])
         closing[m_soup.shape_vertex[s]] = (std::max)(closing[m_soup.shape_vertex[s]], m_soup.values[t]);
     return closing;
+  }
+
+  /*!
+  The local closing value of every vertex of the shape, by
+  `vertex_index()`: the upper quartile (the 19th smallest) of the closing
+  values of the vertex and its 23 nearest vertices of the front; NaN where
+  `closing_values()` is. `suggest_scale()` reads these, so the automatic
+  scale of a sample split into pieces (tiles with a halo of at least a few
+  spacings, the manual's "Tiled Processing on Dask") is
+  `scale_of_closing_values()` of the pieces' values pooled.
+  */
+  std::vector<double> local_closing_values() const
+  {
+    typedef typename Shape::Geom_traits Kernel;
+    typedef typename Kernel::Point_3 Point;
+    typedef CGAL::Search_traits_adapter<std::size_t, typename CGAL::Pointer_property_map<Point>::type,
+                                        CGAL::Search_traits_3<Kernel> > Traits;
+    typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+    typedef typename Search::Tree Tree;
+    const std::vector<double> closing = closing_values();
+    std::vector<double> local(closing.size(), std::numeric_limits<double>::quiet_NaN());
+    const std::size_t n = m_soup.shape_vertex.size();
+    if(n == 0)
+      return local;
+    std::vector<Point> position(m_shape.number_of_vertices());
+    for(typename Shape::Vertex_handle v : m_shape.finite_vertex_handles())
+      position[v->vertex_index()] = v->point();
+    const typename CGAL::Pointer_property_map<Point>::type position_map = CGAL::make_property_map(position);
+    Tree tree(m_soup.shape_vertex.begin(), m_soup.shape_vertex.end(), typename Tree::Splitter(),
+              Traits(position_map));
+    tree.build();
+    const typename Search::Distance distance(position_map);
+    const unsigned int neighbors = unsigned((std::min)(n, std::size_t(24)));
+    const std::size_t upper_quartile = (3 * std::size_t(neighbors)) / 4;
+    internal::for_each_index<CGAL::Parallel_if_available_tag>(
+      n, [] { return std::vector<double>(); },
+      [&](std::size_t i, std::vector<double>& values) {
+        const std::size_t s = m_soup.shape_vertex[i];
+        values.clear();
+        for(const auto& found : Search(tree, position[s], neighbors, 0, true, distance))
+          values.push_back(closing[found.first]);
+        std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(upper_quartile), values.end());
+        local[s] = values[upper_quartile];
+      });
+    return local;
   }
 
   /*!
