@@ -1,7 +1,8 @@
 # Runs conformal_match (PROGRAM) in WORK_DIR: bad inputs and options must
 # fail with status 1, one line "conformal_match: ..." and no output
 # directory; crambin's surface (SURFACE) against itself must match every
-# centre to itself, consistently, and write the three files.
+# centre to itself, consistently, and write the three files; a PDB file
+# (PDB) given twice must be sampled the same way twice.
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 set(failures "")
@@ -65,11 +66,27 @@ else()
     endif()
   endforeach()
   file(READ ${out_dir}/similarity.ply ply LIMIT 300)
-  if(NOT ply MATCHES "element vertex 8186\n.*property float similarity\nend_header")
+  if(NOT ply MATCHES "element vertex 8142\n.*property float similarity\nend_header")
     set(failures "${failures}\nsimilarity.ply: header ${ply}")
   endif()
   if(NOT EXISTS ${out_dir}/summary.txt)
     set(failures "${failures}\nno summary.txt")
+  endif()
+endif()
+
+# one PDB file given twice is sampled twice in one process: the same points
+file(REMOVE_RECURSE ${out_dir})
+execute_process(COMMAND ${PROGRAM} ${PDB} ${PDB} --radius 1.5 --centers 10 --candidates 50 --rings 2,4
+                        --output ${out_dir}
+                RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT result EQUAL 0)
+  set(failures "${failures}\nPDB twice: status ${result}: ${out}${err}")
+elseif(NOT out MATCHES "A: [^\n]*1crn.pdb, ([0-9]+) points")
+  set(failures "${failures}\nPDB twice: no count of A's points: ${out}")
+else()
+  set(a_points ${CMAKE_MATCH_1})
+  if(NOT out MATCHES "B: [^\n]*1crn.pdb, ${a_points} points")
+    set(failures "${failures}\nPDB twice: A and B were sampled differently: ${out}")
   endif()
 endif()
 

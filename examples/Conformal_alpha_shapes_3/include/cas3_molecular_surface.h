@@ -401,11 +401,17 @@ private:
 
 // Greedy Poisson-disk thinning: visits the points in a pseudo-random order
 // of fixed seed and keeps a point when no kept point is closer than spacing.
+// The shuffle starts from the points sorted by their coordinates, so the
+// sample does not depend on the order in which the mesher gave them (which
+// follows memory addresses).
 inline Surface_sample thin(const Surface_sample& dense, double spacing)
 {
   std::vector<std::size_t> order(dense.points.size());
   for(std::size_t i = 0; i < order.size(); ++i)
     order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    return CGAL::compare_xyz(dense.points[i], dense.points[j]) == CGAL::SMALLER;
+  });
   std::mt19937_64 random(20240611);  // Fisher-Yates with a fixed engine: the same order everywhere
   for(std::size_t i = order.size(); i > 1; --i)
     std::swap(order[i - 1], order[std::size_t(random() % i)]);
