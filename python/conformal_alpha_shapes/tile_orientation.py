@@ -10,6 +10,11 @@ from . import tile_io, tile_partition
 
 # Shared points below which a seam does not vote (a corner touching a halo).
 MINIMUM_SEAM_POINTS = 20
+# With input normals, an object of a tile follows them when at least this
+# share of its points' normals agree with them: its tile's sheets followed
+# the normals. Below it (about half, for normals of random signs, which the
+# tile recognized per sheet) it is oriented as without normals.
+FOLLOWED_SHARE = 0.75
 
 
 def tile_votes(folder, tile, names, first_names, states):
@@ -68,16 +73,77 @@ def tile_flip(folder, tile, names, scale_layers, turns):
     return {"size": os.path.getsize(path), "sha256": tile_io.file_digest(path)}
 
 
+def not_following_normals(parts, s, small=False):
+    """The objects (tile, object) of a run with input normals whose points'
+    normals at scale ``s`` agree with the input's below ``FOLLOWED_SHARE``;
+    with ``small``, also those with too few points on the surface to tell."""
+    free = set()
+    for t, part in enumerate(parts):
+        if len(part.get("agreement", [])) > s:
+            agree, total = part["agreement"][s]
+            free |= {(t, c) for c in range(len(total))
+                     if (small and total[c] < MINIMUM_SEAM_POINTS)
+                     or (total[c] >= MINIMUM_SEAM_POINTS and agree[c] < FOLLOWED_SHARE * total[c])}
+    return free
+
+
 def orient(votes, parts, scales, has_normals):
     """Per tile and scale, the objects (``tile_partition.components``) its
     part is to carry turned over: an object is turned when its seam to the
     object it was reached from votes to disagree (from the largest object, by
     the strongest seams); each group of objects so joined faces away from the
-    cloud's center, as one run's sheets do (outward for a closed one); with
-    input normals, none."""
+    cloud's center, as one run's sheets do (outward for a closed one). With
+    input normals, nothing is turned where every object follows them
+    (``FOLLOWED_SHARE``); otherwise those that do are never turned and the
+    others (small ones too) are joined to them by their seams first."""
     turned = [[[] for _ in range(scales)] for _ in parts]
-    if has_normals:
-        return turned
+    units = [(t, c) for t, part in enumerate(parts) for c in range(len(part["sizes"]))]
+
+    def size(unit):
+        return -parts[unit[0]]["sizes"][unit[1]]
+    for s in range(scales):
+        if has_normals and not not_following_normals(parts, s):
+            continue  # every object follows the normals: none is turned
+        free = not_following_normals(parts, s, small=True) if has_normals else set(units)
+        fixed = [unit for unit in units if unit not in free]
+        edges = {}
+        for t, ballots in votes.items():
+            for scale, mine, owner, theirs, agree, disagree in ballots:
+                if scale == s:
+                    pair = tuple(sorted([(t, mine), (owner, theirs)]))
+                    counts = edges.setdefault(pair, [0, 0])
+                    counts[0] += agree
+                    counts[1] += disagree
+        neighbors = {unit: [] for unit in units}
+        for (a, b), (agree, disagree) in edges.items():
+            if agree + disagree >= MINIMUM_SEAM_POINTS:
+                neighbors[a].append((abs(agree - disagree), b, disagree > agree))
+                neighbors[b].append((abs(agree - disagree), a, disagree > agree))
+        relative = {unit: False for unit in fixed}
+        roots = sorted(fixed, key=size) + sorted([unit for unit in units if unit in free], key=size)
+        for root in roots:
+            if root in relative and root in free:
+                continue
+            relative[root] = False
+            group, frontier = [root], [(0, root)]
+            while frontier:  # the strongest seam out of the group first
+                frontier.sort()
+                _, unit = frontier.pop()
+                for strength, other, opposite in neighbors[unit]:
+                    if other not in relative:
+                        relative[other] = relative[unit] ^ opposite
+                        group.append(other)
+                        frontier.append((strength, other))
+            if root not in free:  # the objects that follow the normals decide
+                for t, c in group:
+                    if relative[(t, c)]:
+                        turned[t][s].append(c)
+                continue
+            cone = sum(-parts[t]["cones"][s][c] if relative[(t, c)] else parts[t]["cones"][s][c] for t, c in group)
+            for t, c in group:
+                if relative[(t, c)] ^ (cone < 0):
+                    turned[t][s].append(c)
+    return turned
     units = [(t, c) for t, part in enumerate(parts) for c in range(len(part["sizes"]))]
     for s in range(scales):
         edges = {}

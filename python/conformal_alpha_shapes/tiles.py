@@ -548,7 +548,9 @@ def _summary(manifest, votes, flips, reused, cloud, first_names):
             "reused_parts": reused,
             "flipped": [[t, s, objects] for t, row in enumerate(flips) for s, objects in enumerate(row) if objects],
             "worker_peak_memory": {str(pid): size for pid, size in memory.items()},
-            "shapes": manifest["shapes"]}
+            "shapes": manifest["shapes"],
+            "objects_without_normals": len(tile_orientation.not_following_normals(
+                [parts[str(t)] for t in range(manifest["tiles"])], 0)) if cloud.has_normals else None}
 
 
 _SHAPES_TEXT = {
@@ -577,6 +579,9 @@ def format_summary(summary):
              f"{'smoothed' if summary['denoised'] else 'no smoothing'}",
              "scales: " + ", ".join(f"a = {a:.4g}" for a in summary["a"]),
              _SHAPES_TEXT[summary["shapes"]],
+             *([f"input normals: {summary['objects_without_normals']} object(s) of the tiles point about as often "
+                "to one side as to the other (unoriented normals?); oriented as without normals"]
+               if summary.get("objects_without_normals") else []),
              f"seams: {len(seams)}, worst agreement "
              + (f"{100 * summary['worst_seam_agreement']:.2f}%" if summary["worst_seam_agreement"] is not None
                 else "none"),
