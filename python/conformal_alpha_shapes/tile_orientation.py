@@ -144,37 +144,3 @@ def orient(votes, parts, scales, has_normals):
                 if relative[(t, c)] ^ (cone < 0):
                     turned[t][s].append(c)
     return turned
-    units = [(t, c) for t, part in enumerate(parts) for c in range(len(part["sizes"]))]
-    for s in range(scales):
-        edges = {}
-        for t, ballots in votes.items():
-            for scale, mine, owner, theirs, agree, disagree in ballots:
-                if scale == s:
-                    pair = tuple(sorted([(t, mine), (owner, theirs)]))
-                    counts = edges.setdefault(pair, [0, 0])
-                    counts[0] += agree
-                    counts[1] += disagree
-        neighbors = {unit: [] for unit in units}
-        for (a, b), (agree, disagree) in edges.items():
-            if agree + disagree >= MINIMUM_SEAM_POINTS:
-                neighbors[a].append((abs(agree - disagree), b, disagree > agree))
-                neighbors[b].append((abs(agree - disagree), a, disagree > agree))
-        relative = {}
-        for root in sorted(units, key=lambda unit: -parts[unit[0]]["sizes"][unit[1]]):
-            if root in relative:
-                continue
-            relative[root] = False
-            group, frontier = [root], [(0, root)]
-            while frontier:  # the strongest seam out of the group first
-                frontier.sort()
-                _, unit = frontier.pop()
-                for strength, other, opposite in neighbors[unit]:
-                    if other not in relative:
-                        relative[other] = relative[unit] ^ opposite
-                        group.append(other)
-                        frontier.append((strength, other))
-            cone = sum(-parts[t]["cones"][s][c] if relative[(t, c)] else parts[t]["cones"][s][c] for t, c in group)
-            for t, c in group:
-                if relative[(t, c)] ^ (cone < 0):
-                    turned[t][s].append(c)
-    return turned
