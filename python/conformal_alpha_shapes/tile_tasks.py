@@ -243,7 +243,7 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
                               np.bincount(component[own], minlength=objects).tolist()])
     part = tile_partition.part_path(folder, tile)
     tile_io.write_part(part, records, names, descriptions)
-    sizes = np.bincount(component[core], minlength=int(component.max()) + 1).tolist()
+    sizes = np.bincount(component[core], minlength=objects).tolist()
     return {"names": names, "descriptions": descriptions, "cones": cones, "agreement": agreement, "sizes": sizes,
             "size": os.path.getsize(part),
             "sha256": tile_io.file_digest(part), "seconds": time.monotonic() - started,
