@@ -256,14 +256,16 @@ py::dict layer_arrays(const std::vector<Value>& values)
   double *pH = H.mutable_data(), *pK = Kg.mutable_data(), *pk1 = k1.mutable_data(), *pk2 = k2.mutable_data();
   double* pr = radius.mutable_data();
   py::array_t<double> H_sigma = new_array<double>(n), K_sigma = new_array<double>(n),
-                      normal_sigma = new_array<double>(n);
+                      normal_sigma = new_array<double>(n), H_noise_sigma = new_array<double>(n);
   double *psH = H_sigma.mutable_data(), *psK = K_sigma.mutable_data(), *psn = normal_sigma.mutable_data();
+  double* psHn = H_noise_sigma.mutable_data();
   for(std::size_t i = 0; i < n; ++i)
   {
     const Value& c = values[i];
     psH[i] = c.uncertainty.mean_curvature;
     psK[i] = c.uncertainty.gaussian_curvature;
     psn[i] = c.uncertainty.normal_degrees;
+    psHn[i] = c.uncertainty.mean_curvature_noise;
     put_triple(pn, i, c.normal);
     put_triple(p1, i, c.principal.max_direction);
     put_triple(p2, i, c.principal.min_direction);
@@ -293,6 +295,7 @@ py::dict layer_arrays(const std::vector<Value>& values)
   layer["H_sigma"] = H_sigma;
   layer["K_sigma"] = K_sigma;
   layer["normal_sigma"] = normal_sigma;
+  layer["H_noise_sigma"] = H_noise_sigma;
   if constexpr(of_points)
   {
     py::array_t<double> distance = new_array<double>(n);
@@ -591,9 +594,9 @@ std::vector<cas3::Layer> layers_from_python(const py::list& layers, std::size_t 
     // the columns in the file's order (cas3::Layer::value_names())
     const char* const triples[3] = {"normal", "d1", "d2"};
     const int triple_column[3] = {0, 7, 10};
-    const char* const scalars[9] = {"H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma",
-                                    "normal_sigma"};
-    const int scalar_column[9] = {3, 4, 5, 6, 13, 14, 15, 16, 17};
+    const char* const scalars[10] = {"H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma",
+                                     "normal_sigma", "H_noise_sigma"};
+    const int scalar_column[10] = {3, 4, 5, 6, 13, 14, 15, 16, 17, 18};
     for(int t = 0; t < 3; ++t)
     {
       const Doubles a = d[triples[t]].cast<Doubles>();
@@ -604,7 +607,7 @@ std::vector<cas3::Layer> layers_from_python(const py::list& layers, std::size_t 
           layer.values[i * cas3::Layer::number_of_values + std::size_t(triple_column[t] + j)] =
             float(a.data()[3 * i + std::size_t(j)]);
     }
-    for(int s = 0; s < 9; ++s)
+    for(int s = 0; s < 10; ++s)
     {
       if(s >= 6 && !d.contains(scalars[s]))  // layers without uncertainties (LAS output)
       {

@@ -135,7 +135,8 @@ int run(const cas3::Curvature_options& o)
         output.check(csv);
       }
       summary << cas3::summary_row(layer.label, a, curvatures) << "\n";
-      uncertainty.push_back(cas3::summary_uncertainty_item(layer.label, cas3::median_relative_uncertainty(curvatures)));
+      uncertainty.push_back(cas3::summary_uncertainty_item(layer.label, cas3::median_relative_uncertainty(curvatures),
+                                                          cas3::median_relative_uncertainty(curvatures, true)));
       progress("layer " + layer.label + ": curvature estimated");
       layers.push_back(std::move(layer));
     };

@@ -203,6 +203,9 @@ class Layer:
             ``distance`` (the manual, section "Uncertainty"); NaN where
             unknown. ``np.abs(layer.H) > 2 * layer.H_sigma`` keeps the values
             that their uncertainty does not swamp.
+        H_noise_sigma: (N,) float64, the part of H_sigma that the points'
+            noise gives (the rest is the bias of the radius); None in a
+            result read from a file without it.
         name: the layer's name, as the program names it ("rauto", "r4s",
             "25pct_k2"); a: the scale of its surface; description: what the
             layer is, as the program's file headers say; surface: a dict of
@@ -215,7 +218,7 @@ class Layer:
     """
 
     _arrays = ("normal", "H", "K", "k1", "k2", "d1", "d2", "radius", "source", "distance", "H_sigma", "K_sigma",
-               "normal_sigma")
+               "normal_sigma", "H_noise_sigma")
 
     def __init__(self, values):
         for key in self._arrays:
@@ -282,16 +285,18 @@ class Layer:
         return colors
 
 
-# A layer is noise-dominated when the median over its points of sigma_H / |H|
-# exceeds this (as the program's summary says).
-NOISE_DOMINATED_RELATIVE_UNCERTAINTY = 0.25
+# A layer is noise-dominated when the median over its points of the noise's
+# part of sigma_H / |H| exceeds this, bias-dominated when that of the whole
+# sigma_H / |H| does and the noise's part does not (as the program's summary says).
+DOMINATED_RELATIVE_UNCERTAINTY = 0.25
 
 
-def _median_relative_uncertainty(layer):
-    if layer.H_sigma is None:
+def _median_relative(sigma, H):
+    """The median over the points with a value of ``sigma / |H|``; NaN without any (or without ``sigma``)."""
+    if sigma is None:
         return float("nan")
     with np.errstate(divide="ignore", invalid="ignore"):
-        relative = layer.H_sigma / np.abs(layer.H)
+        relative = sigma / np.abs(H)
     relative = relative[~np.isnan(relative)]
     if not len(relative):
         return float("nan")
@@ -337,13 +342,23 @@ class Result:
                 break
 
     def uncertainty_summary(self):
-        """Per layer name, as the program's summary gives it: ``(relative, noise_dominated)``, the median
-        over the points of sigma_H / |H| and whether it exceeds ``NOISE_DOMINATED_RELATIVE_UNCERTAINTY``
-        (the layer's values are then mostly noise)."""
+        """Per layer name, as the program's summary gives it: ``(relative, relative_noise, dominated)``,
+        the median over the points of sigma_H / |H|, the same of the noise's part of sigma_H, and
+        ``"noise"`` when the latter exceeds ``DOMINATED_RELATIVE_UNCERTAINTY`` (the layer's values are
+        mostly noise), ``"bias"`` when only the former does (H changes over the neighborhood: the
+        value summarizes it rather than the point; ``"noise or bias"`` for a layer read from a file
+        without H_noise_sigma), else None."""
         out = {}
         for name in self.layers:
-            relative = _median_relative_uncertainty(self._layers[name])
-            out[name] = (relative, bool(relative > NOISE_DOMINATED_RELATIVE_UNCERTAINTY))
+            layer = self._layers[name]
+            relative = _median_relative(layer.H_sigma, layer.H)
+            relative_noise = _median_relative(layer.H_noise_sigma, layer.H)
+            dominated = None
+            if relative_noise > DOMINATED_RELATIVE_UNCERTAINTY:
+                dominated = "noise"
+            elif relative > DOMINATED_RELATIVE_UNCERTAINTY:
+                dominated = "bias" if layer.H_noise_sigma is not None else "noise or bias"
+            out[name] = (relative, relative_noise, dominated)
         return out
 
     def __getitem__(self, name):

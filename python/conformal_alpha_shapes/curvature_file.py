@@ -21,13 +21,13 @@ import numpy as np
 from . import output_files
 from .matching import curvedness, shape_index
 
-__all__ = ["read_values", "write_double_ply", "LAYER_FIELDS"]
+__all__ = ["read_values", "write_double_ply", "LAYER_FIELDS", "SCALARS"]
 
 LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",
-                "radius", "distance", "H_sigma", "K_sigma", "normal_sigma")
+                "radius", "distance", "H_sigma", "K_sigma", "normal_sigma", "H_noise_sigma")
 _TRIPLES = {"normal": ("nx", "ny", "nz"), "d1": ("d1x", "d1y", "d1z"), "d2": ("d2x", "d2y", "d2z")}
-_SCALARS = ("H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma", "normal_sigma")
-_OPTIONAL = ("H_sigma", "K_sigma", "normal_sigma")
+SCALARS = ("H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma", "normal_sigma", "H_noise_sigma")
+_OPTIONAL = ("H_sigma", "K_sigma", "normal_sigma", "H_noise_sigma")
 _RESULT_COMMENT = "conformal_alpha_shapes result "
 _PLY_TYPES = {
     "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
@@ -119,7 +119,7 @@ def read_values(path):
             raise ValueError(f"{path}: layer {label} has no {', '.join(absent)}")
         values = {key: np.stack([records[f"{field}_{label}"] for field in fields], axis=1).astype(np.float64)
                   for key, fields in _TRIPLES.items()}
-        for key in _SCALARS:
+        for key in SCALARS:
             name = f"{key}_{label}"
             values[key] = records[name].astype(np.float64) if name in names else np.full(count, np.nan)
         values["source"] = records[f"source_{label}"].astype(np.uint8)
@@ -152,7 +152,7 @@ def write_double_ply(path, points, outlier, layers, spacing, noise, denoised, me
     """
     count = len(points)
     for layer in layers:
-        for key, shape in [(key, (count, 3)) for key in _TRIPLES] + [(key, (count,)) for key in _SCALARS + ("source",)]:
+        for key, shape in [(key, (count, 3)) for key in _TRIPLES] + [(key, (count,)) for key in SCALARS + ("source",)]:
             if np.shape(getattr(layer, key)) != shape:
                 raise ValueError(f"write_ply: layer {layer.name}: {key} has not one value per point")
     fields = [("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("outlier", "u1")]
@@ -169,7 +169,7 @@ def write_double_ply(path, points, outlier, layers, spacing, noise, denoised, me
         for key, triple in _TRIPLES.items():
             for i, field in enumerate(triple):
                 records[f"{field}_{layer.name}"] = getattr(layer, key)[:, i]
-        for key in _SCALARS:
+        for key in SCALARS:
             records[f"{key}_{layer.name}"] = getattr(layer, key)
         records[f"source_{layer.name}"] = layer.source
         records[f"shape_index_{layer.name}"] = shape_index(layer.k1, layer.k2)

@@ -20,6 +20,7 @@ import os
 import numpy as np
 
 from . import output_files
+from .curvature_file import LAYER_FIELDS, SCALARS
 from .matching import curvedness, shape_index
 
 __all__ = [
@@ -308,10 +309,6 @@ def atomic_write(path, write):
     output_files.atomic_write(path, write)
 
 
-_LAYER_FIELDS = ("nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y", "d1z", "d2x", "d2y", "d2z",
-                 "radius", "distance", "H_sigma", "K_sigma", "normal_sigma")
-
-
 def save_array(path, values):
     """Writes a numpy array as ``.npy``, atomically."""
     def write(temporary):
@@ -325,7 +322,7 @@ def part_dtype(layers, with_index=True):
     merged file's (``with_index=False``) has each layer's shape index and curvedness after the layers."""
     fields = [("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("outlier", "u1")]
     for name in layers:
-        fields += [(f"{field}_{name}", "<f4") for field in _LAYER_FIELDS] + [(f"source_{name}", "u1")]
+        fields += [(f"{field}_{name}", "<f4") for field in LAYER_FIELDS] + [(f"source_{name}", "u1")]
     if not with_index:
         for name in layers:
             fields += [(f"shape_index_{name}", "<f4"), (f"curvedness_{name}", "<f4")]
@@ -431,7 +428,7 @@ def merge_parts_las(path, merged_ply, layers, cloud):
         for key, fields in (("normal", ("nx", "ny", "nz")), ("d1", ("d1x", "d1y", "d1z")),
                             ("d2", ("d2x", "d2y", "d2z"))):
             values[key] = np.column_stack([block[f"{f}_{name}"] for f in fields]).astype(np.float64)
-        for key in ("H", "K", "k1", "k2", "radius", "distance", "H_sigma", "K_sigma", "normal_sigma"):
+        for key in SCALARS:
             values[key] = block[f"{key}_{name}"].astype(np.float64)
         values["source"] = np.ascontiguousarray(block[f"source_{name}"])
         return values

@@ -8,7 +8,7 @@ import time
 
 import numpy as np
 
-from . import tile_io, tile_partition
+from . import curvature_file, tile_io, tile_partition
 
 # What a tile's shape held between phases weighs per point with halo (the
 # manual, "Tiled Processing on Dask", measures the weight).
@@ -214,7 +214,7 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
             records[f"n{axis}_{name}"] = layer.normal[core, i]
             records[f"d1{axis}_{name}"] = layer.d1[core, i]
             records[f"d2{axis}_{name}"] = layer.d2[core, i]
-        for key in ("H", "K", "k1", "k2", "radius", "distance", "source", "H_sigma", "K_sigma", "normal_sigma"):
+        for key in curvature_file.SCALARS + ("source",):
             records[f"{key}_{name}"] = getattr(layer, key)[core]
     first_layers = [result[result.layers[s * per_scale]] for s in range(len(job["scales"]))]
     halo = np.flatnonzero(~is_core)

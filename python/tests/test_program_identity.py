@@ -54,6 +54,24 @@ def test_bunny_ply_and_csv(tmp_path):
         assert (rows["a"] == layer.a).all()
 
 
+def test_uncertainty_summary_is_the_programs(tmp_path):
+    """The bunny's layers, some noise-dominated and some bias-dominated: the
+    program's summary line and ``Result.uncertainty_summary()`` say the same."""
+    bunny = required_path("CAS3_BUNNY_XYZ", "the bundled bunny")
+    run = subprocess.run([required_path("CAS3_PROGRAM", "the conformal_curvature program"), str(bunny), "--output",
+                          str(tmp_path / "out")], check=True, capture_output=True, text=True)
+    line = next(line for line in run.stdout.splitlines() if line.startswith("uncertainty of H"))
+    r = cas.multiscale_curvatures(*cas.read_point_cloud(bunny))
+    words = {None: "", "noise": " noise-dominated", "bias": " bias-dominated"}
+    items = [f"{name} {100 * relative:.3g}%{words[dominated]}"
+             for name, (relative, _, dominated) in r.uncertainty_summary().items()]
+    assert line.split(": ", 1)[1] == ", ".join(items)
+    assert {dominated for _, _, dominated in r.uncertainty_summary().values()} == {"noise", "bias"}
+    for name in r.layers:
+        sigma, noise = r[name].H_sigma, r[name].H_noise_sigma
+        assert np.all(noise[np.isfinite(sigma)] <= sigma[np.isfinite(sigma)] * (1 + 1e-12))
+
+
 @pytest.mark.parametrize("name", ["kitten.xyz", "building.ply"])
 @pytest.mark.parametrize("with_normals", [True, False], ids=["normals", "points only"])
 def test_scans(tmp_path, name, with_normals):

@@ -779,6 +779,9 @@ BOOST_AUTO_TEST_CASE(uncertainties_are_calibrated)
       H_in += e_H <= 2 * c.uncertainty.mean_curvature ? 1 : 0;
       K_in += std::abs(c.gaussian_curvature - s.gaussian_curvature[i]) <= 2 * c.uncertainty.gaussian_curvature ? 1 : 0;
       BOOST_REQUIRE(c.uncertainty.normal_degrees >= 0);
+      // the noise's part of the whole
+      BOOST_REQUIRE(c.uncertainty.mean_curvature_noise > 0);
+      BOOST_REQUIRE(c.uncertainty.mean_curvature_noise <= c.uncertainty.mean_curvature * (1 + 1e-12));
     }
     BOOST_REQUIRE(eH.size() > s.points.size() / 2);
     const double n = double(eH.size());

@@ -37,9 +37,9 @@ namespace cas3 {
 // cloud file stores them.
 struct Layer
 {
-  static constexpr int number_of_values = 18;
-  // the standard uncertainties of H, K and the normal (degrees) last, so
-  // that the columns before them keep their places
+  static constexpr int number_of_values = 19;
+  // the standard uncertainties of H, K and the normal (degrees) and the
+  // noise's part of H's last, so that the columns before them keep their places
   static constexpr int H_sigma_column = 15;
   // the values that the LAS file holds, those before the uncertainties:
   // its Extra Bytes VLR holds 341 fields, 21 layers of these
@@ -48,7 +48,7 @@ struct Layer
   {
     static const char* const names[number_of_values] = {"nx", "ny", "nz", "H", "K", "k1", "k2", "d1x", "d1y",
                                                          "d1z", "d2x", "d2y", "d2z", "radius", "distance",
-                                                         "H_sigma", "K_sigma", "normal_sigma"};
+                                                         "H_sigma", "K_sigma", "normal_sigma", "H_noise_sigma"};
     return names;
   }
   std::string label;       // the property suffix: layer_label()
@@ -70,7 +70,8 @@ struct Layer
                                           p.max_direction.x(), p.max_direction.y(), p.max_direction.z(),
                                           p.min_direction.x(), p.min_direction.y(), p.min_direction.z(),
                                           c.radius, c.distance, c.uncertainty.mean_curvature,
-                                          c.uncertainty.gaussian_curvature, c.uncertainty.normal_degrees};
+                                          c.uncertainty.gaussian_curvature, c.uncertainty.normal_degrees,
+                                          c.uncertainty.mean_curvature_noise};
       for(int j = 0; j < number_of_values; ++j)
         values[i * number_of_values + std::size_t(j)] = float(v[j]);
       source[i] = std::uint8_t(c.source);
@@ -449,7 +450,7 @@ void write_point_cloud_las(std::ostream& out, const std::vector<Point>& points, 
 inline const char* csv_header()
 {
   return "point_index,x,y,z,a,rings,on_surface,nx,ny,nz,H,K,k1,k2,d1x,d1y,d1z,d2x,d2y,d2z,outlier,"
-         "neighborhood,radius,source,distance,H_sigma,K_sigma,normal_sigma\n";
+         "neighborhood,radius,source,distance,H_sigma,K_sigma,normal_sigma,H_noise_sigma\n";
 }
 
 // The CSV rows of one layer, a row per input point: the layer's scale `a`,
@@ -490,7 +491,7 @@ void append_csv_rows(std::ostream& csv, const std::vector<Point>& points, double
     line += ',' + std::to_string(int(c.source)) + ',';
     append(line, c.distance);
     for(double x : {double(c.uncertainty.mean_curvature), double(c.uncertainty.gaussian_curvature),
-                    double(c.uncertainty.normal_degrees)})
+                    double(c.uncertainty.normal_degrees), double(c.uncertainty.mean_curvature_noise)})
     {
       line += ',';
       append(line, x);

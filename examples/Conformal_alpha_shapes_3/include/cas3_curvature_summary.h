@@ -65,18 +65,24 @@ std::string summary_row(const std::string& label, double a,
 }
 
 // A layer is called noise-dominated when the median over its points of the
-// relative uncertainty of H, sigma_H / |H|, exceeds this: most of its
-// values are then mostly noise (the manual, section "Uncertainty").
-constexpr double noise_dominated_relative_uncertainty = 0.25;
+// part of sigma_H / |H| that the points' noise gives exceeds this: its
+// values are then mostly noise; bias-dominated when the whole uncertainty's
+// median does and the noise's does not: H changes over the neighborhood,
+// and the value summarizes it rather than the point (the manual, section
+// "Uncertainty").
+constexpr double dominated_relative_uncertainty = 0.25;
 
-// The median over the points with a value of sigma_H / |H|; NaN without any.
+// The median over the points with a value of sigma_H / |H|, or with
+// `noise_part` of its noise's part; NaN without any.
 template <class Kernel>
-double median_relative_uncertainty(const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures)
+double median_relative_uncertainty(const std::vector<CGAL::Conformal_alpha_shapes_3::Point_curvature<Kernel> >& curvatures,
+                                   bool noise_part = false)
 {
   std::vector<double> relative;
   for(const auto& c : curvatures)
   {
-    const double r = double(c.uncertainty.mean_curvature) / std::abs(double(c.mean_curvature));
+    const double sigma = double(noise_part ? c.uncertainty.mean_curvature_noise : c.uncertainty.mean_curvature);
+    const double r = sigma / std::abs(double(c.mean_curvature));
     if(!std::isnan(r))
       relative.push_back(r);
   }
@@ -88,16 +94,18 @@ double median_relative_uncertainty(const std::vector<CGAL::Conformal_alpha_shape
 }
 
 // The summary's part of a layer in the uncertainty line: its label, its
-// median relative uncertainty of H in percent and, above
-// noise_dominated_relative_uncertainty, "noise-dominated".
-inline std::string summary_uncertainty_item(const std::string& label, double relative)
+// median relative uncertainty of H in percent (`relative`) and, by that of
+// the noise's part (`relative_noise`), "noise-dominated" or "bias-dominated".
+inline std::string summary_uncertainty_item(const std::string& label, double relative, double relative_noise)
 {
   char text[96];
+  const char* const cause = relative_noise > dominated_relative_uncertainty ? " noise-dominated"
+                            : relative > dominated_relative_uncertainty     ? " bias-dominated"
+                                                                            : "";
   if(!std::isfinite(relative))
     std::snprintf(text, sizeof text, "%s -", label.c_str());
   else
-    std::snprintf(text, sizeof text, "%s %.3g%%%s", label.c_str(), 100 * relative,
-                  relative > noise_dominated_relative_uncertainty ? " noise-dominated" : "");
+    std::snprintf(text, sizeof text, "%s %.3g%%%s", label.c_str(), 100 * relative, cause);
   return text;
 }
 

@@ -64,6 +64,10 @@ struct Curvature_uncertainty
   typename GT::FT mean_curvature = std::numeric_limits<double>::quiet_NaN();      ///< of `H`
   typename GT::FT gaussian_curvature = std::numeric_limits<double>::quiet_NaN();  ///< of `K`
   typename GT::FT normal_degrees = std::numeric_limits<double>::quiet_NaN();      ///< of the normal, in degrees
+  /// the part of `mean_curvature` that the noise of the points gives (the
+  /// sample's and the fit's residuals'); the rest is the bias of the radius
+  /// and, for an automatic radius, its choice
+  typename GT::FT mean_curvature_noise = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// \ingroup PkgConformalAlphaShapes3Curvature
@@ -169,6 +173,7 @@ Vertex_curvature<GT> to_vertex_curvature(const Vertex_estimate& e)
   c.uncertainty.mean_curvature = e.uncertainty.H;
   c.uncertainty.gaussian_curvature = e.uncertainty.K;
   c.uncertainty.normal_degrees = e.uncertainty.normal * (180 / 3.14159265358979323846);
+  c.uncertainty.mean_curvature_noise = e.uncertainty.H_noise;
   return c;
 }
 

@@ -83,10 +83,11 @@ struct Neighborhood_rule
 };
 
 // The standard uncertainties of an estimate: of H, of K, and of the
-// normal's direction (radians); NaN where unknown.
+// normal's direction (radians), and the noise's part of H's; NaN where unknown.
 struct Estimate_uncertainty
 {
   double H = std::numeric_limits<double>::quiet_NaN();
+  double H_noise = std::numeric_limits<double>::quiet_NaN();
   double K = std::numeric_limits<double>::quiet_NaN();
   double normal = std::numeric_limits<double>::quiet_NaN();
 };
@@ -204,6 +205,7 @@ inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double r
   const double r4 = radius * radius * radius * radius;
   const double se_H = noise * e.per_noise, se_K = noise * e.per_noise_K;
   u.H = std::sqrt(se_H * se_H + rates.squared_H * r4);
+  u.H_noise = se_H;
   u.K = std::sqrt(se_K * se_K + rates.squared_K * r4);
   u.normal = noise * e.per_noise_normal;
   return u;

@@ -52,6 +52,7 @@ Curvature_uncertainty<GT> grown_uncertainty(const Curvature_uncertainty<GT>& u, 
   grown.mean_curvature = std::sqrt(u.mean_curvature * u.mean_curvature + H * H);
   grown.gaussian_curvature = std::sqrt(u.gaussian_curvature * u.gaussian_curvature + K * K);
   grown.normal_degrees = std::sqrt(u.normal_degrees * u.normal_degrees + normal * normal);
+  grown.mean_curvature_noise = u.mean_curvature_noise;
   return grown;
 }
 
@@ -163,7 +164,7 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
     return nearest;
   }
   Curvature_uncertainty<GT> u;
-  u.mean_curvature = u.gaussian_curvature = u.normal_degrees = 0;
+  u.mean_curvature = u.gaussian_curvature = u.normal_degrees = u.mean_curvature_noise = 0;
   for(const auto& source : sources)
   {
     const double w = source.second / total;
@@ -171,6 +172,7 @@ Point_curvature<GT> value_at_vertex(std::size_t v, std::size_t own_vertex, const
     u.mean_curvature += w * s.mean_curvature;
     u.gaussian_curvature += w * s.gaussian_curvature;
     u.normal_degrees += w * s.normal_degrees;
+    u.mean_curvature_noise += w * s.mean_curvature_noise;
   }
   n.normalize();
   max_d = (max_d - max_d.dot(n) * n).normalized();

@@ -155,6 +155,7 @@ struct Input_units_writer
     c.principal.min_curvature = input.curvature_to_input(c.principal.min_curvature);
     c.uncertainty.mean_curvature = input.curvature_to_input(c.uncertainty.mean_curvature);
     c.uncertainty.gaussian_curvature = input.gaussian_curvature_to_input(c.uncertainty.gaussian_curvature);
+    c.uncertainty.mean_curvature_noise = input.curvature_to_input(c.uncertainty.mean_curvature_noise);
     (*w.layer)[input.input_index[i]] = c;
   }
 };
