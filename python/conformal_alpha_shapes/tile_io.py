@@ -82,11 +82,17 @@ def _structured_reader(records, names):
     def chunks(size):
         for start in range(0, len(records), size):
             block = records[start:start + size]
-            points = np.column_stack([block[c].astype(np.float64) for c in "xyz"])
-            normals = (np.column_stack([block[c].astype(np.float64) for c in normal_names])
-                       if has_normals else None)
-            yield start, points, normals
+            yield start, _columns(block, "xyz"), _columns(block, normal_names) if has_normals else None
     return has_normals, chunks
+
+
+def _columns(block, names):
+    """The fields ``names`` of a structured array as columns of a float64
+    array, filled one at a time (no temporary array per field)."""
+    out = np.empty((len(block), len(names)))
+    for k, name in enumerate(names):
+        out[:, k] = block[name]
+    return out
 
 
 def _open_ply(path):
@@ -213,10 +219,16 @@ def _open_xyz(path):
     return Cloud(path, count, columns == 6, chunks)
 
 
-# LAS records read at a time: a chunk's points and fields take about 100 bytes each.
+# LAS records read at a time at most: a chunk's points and fields take about 100 bytes each.
 LAS_CHUNK = 1 << 20
-# LAS records of the merged file made at a time (the values in double, about 1 kB each).
-LAS_RECORDS_MADE = 1 << 16
+# Points read at a time where the chunks' size changes no value.
+READ_CHUNK = 1 << 18
+# Records of the parts merged at a time (about 500 bytes each with five layers).
+MERGE_CHUNK = 1 << 15
+# LAS records of the merged file made at a time (the values in double, about 3 kB each with five layers).
+LAS_RECORDS_MADE = 1 << 13
+# LAS records read by one call of the native reader (about 100 bytes each as it reads them).
+LAS_READ = 1 << 16
 
 
 def _open_las(path, las_filter):
@@ -243,14 +255,25 @@ def _open_las(path, las_filter):
             start += len(chunk["points"])
 
     counts = {"read": 0, "classes": 0, "withheld": 0, "returns": 0}
-    for _, chunk in kept_chunks(LAS_CHUNK, False):
+    for _, chunk in kept_chunks(min(LAS_READ, LAS_CHUNK), False):
         for key in counts:
             counts[key] += chunk["counts"][key]
 
     def chunks(size):
-        for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK), False):
-            if len(chunk["points"]):
-                yield start, chunk["points"], None
+        # a chunk's points gathered from smaller reads: the reader's records
+        # weigh about four times the points
+        size = min(max(size, 1), LAS_CHUNK)
+        start = 0
+        for first in range(0, total, size):
+            last = min(first + size, total)
+            points, kept = np.empty((last - first, 3)), 0
+            for at in range(first, last, LAS_READ):
+                piece = read(at, min(LAS_READ, last - at), False)["points"]
+                points[kept:kept + len(piece)] = piece
+                kept += len(piece)
+            if kept:
+                yield start, points[:kept], None
+            start += kept
 
     def fields(size):
         for start, chunk in kept_chunks(min(max(size, 1), LAS_CHUNK), True):
@@ -294,7 +317,7 @@ def open_cloud(path, las_filter=None):
     if extension not in openers:
         raise InputError(f"{path}: tiled runs read .ply (binary), .npy, .xyz and .las, not '{extension}'")
     cloud = openers[extension](path)
-    for start, points, _ in cloud.chunks(1 << 20):
+    for start, points, _ in cloud.chunks(READ_CHUNK):
         bad = np.flatnonzero(~np.isfinite(points).all(axis=1))
         if len(bad):
             raise InputError(f"{path}: point {start + int(bad[0])}: coordinate is NaN or infinite")
@@ -379,8 +402,8 @@ def merge_parts(path, part_paths, layers, descriptions, count):
         out = np.memmap(temporary, dtype=dtype, mode="r+", offset=len(header), shape=(count,))
         for part_path in part_paths:
             part = read_part(part_path, layers)
-            for start in range(0, len(part), 1 << 20):
-                block = part[start:start + (1 << 20)]
+            for start in range(0, len(part), MERGE_CHUNK):
+                block = part[start:start + MERGE_CHUNK]
                 values = np.empty(len(block), dtype)
                 for name in block.dtype.names:
                     if name != "input_index":
@@ -408,7 +431,7 @@ def merge_parts_las(path, merged_ply, layers, cloud):
     count = len(records)
     if cloud.las is not None:
         info = dict(cloud.las)
-        field_chunks = cloud.las_fields(LAS_CHUNK)
+        field_chunks = cloud.las_fields(LAS_RECORDS_MADE)
     else:
         low, high = np.full(3, np.inf), np.full(3, -np.inf)
         for start in range(0, count, LAS_CHUNK):

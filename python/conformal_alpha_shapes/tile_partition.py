@@ -6,8 +6,8 @@ import os
 
 import numpy as np
 
-# Points read from the cloud at a time.
-CHUNK = 1 << 20
+# Points read from the cloud at a time (their arrays take about 100 bytes each).
+CHUNK = 1 << 18
 # The cells, in spacings, whose touching joins the points of one object.
 COMPONENT_CELL_SPACINGS = 3.0
 

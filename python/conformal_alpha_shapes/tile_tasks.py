@@ -109,6 +109,16 @@ def tile_noise_neighbors(folder, tile, has_normals, center, exponent, sample, ne
     return index[rows], q[rows]
 
 
+def pooled_noise_estimate(found):
+    """``estimate_noise()`` on the points of the tiles' ``tile_noise_neighbors``
+    (each point once, in input order)."""
+    from . import _unchecked_noise_estimate
+    index = np.concatenate([f[0] for f in found])
+    q = np.concatenate([f[1] for f in found])
+    _, rows = np.unique(index, return_index=True)
+    return _unchecked_noise_estimate(q[rows])
+
+
 class _TileShape:
     """A tile's points and its job, the shape built (``conformal_alpha_shapes._job``).
 

@@ -47,6 +47,9 @@ HELD_SHAPES_SHARE = 0.5
 # estimate_noise()'s sample of the points (noise_sample_size in estimate_noise.h) and the neighbors of its fits
 NOISE_SAMPLE = 100000
 NOISE_NEIGHBORS = 24
+# The points whose coordinates are summed at a time for the cloud's center
+# (the sums' rounding is part of the answer).
+CENTER_CHUNK = 1 << 20
 # What the program asks of glibc's malloc (the manual, "Performance"):
 # transparent huge pages where the kernel gives them on request, and one
 # arena, so that a worker runs a tile as the program would.
@@ -319,14 +322,19 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
     has_normals = cloud.has_normals
     if "tree" not in manifest:
         stride = max(1, cloud.count // 1_000_000)
-        sample = np.concatenate([p[(-start) % stride::stride]
-                                 for start, p, _ in cloud.chunks(tile_partition.CHUNK)])
         tiles = max(1, math.ceil(cloud.count / options["tile_points"]))
-        band = _sample_halo(sample, stride, options) if tiles > 1 else 0.0
-        tree = tile_partition.split(sample, tiles, 0, band)
+        # the sample (up to 2 million points) goes to a file and is cut on a
+        # worker, so that the driver holds one chunk of the cloud at a time
+        sample_path = os.path.join(output, "tiles", "sample.f8")
+        with open(sample_path, "wb") as f:
+            for start, p, _ in cloud.chunks(tile_partition.CHUNK):
+                p[(-start) % stride::stride].tofile(f)
+        tree = client.submit(_sample_tree, sample_path, stride, tiles, options, retries=3, pure=False).result()
+        os.unlink(sample_path)
         core = tile_partition.write_tile_files(cloud, tree, tiles, output, 0.0, "core")
         total = np.zeros(3)
-        for _, p, _ in cloud.chunks(tile_partition.CHUNK):
+        # chunks of this size, whose sums' rounding is part of the center
+        for _, p, _ in cloud.chunks(CENTER_CHUNK):
             total += p.sum(axis=0)
         manifest.update(tree=tree, tiles=tiles, core=core, center=(total / cloud.count).tolist())
         save()
@@ -352,6 +360,14 @@ def _partition(cloud, output, options, manifest, save, client, quiet):
         save()
 
 
+def _sample_tree(path, stride, tiles, options):
+    """The partition's tree of cuts over the sample in the file ``path``
+    (every ``stride``-th point, as float64 triples): a worker's task."""
+    sample = np.fromfile(path, dtype=np.float64).reshape(-1, 3)
+    band = _sample_halo(sample, stride, options) if tiles > 1 else 0.0
+    return tile_partition.split(sample, tiles, 0, band)
+
+
 def _sample_halo(sample, stride, options):
     """The halo's width as the partition foresees it: the rule's width in the
     spacing of the points, from the sample's spacing (every ``stride``-th
@@ -372,7 +388,6 @@ def _global_noise(client, cloud, output, tiles, quiet):
     exact selection over the tiles), the sample of the points with the
     smallest order-free keys in that frame, and ``estimate_noise()`` on that
     sample with the neighbors of its fits, which it gives as on the whole cloud."""
-    from . import _unchecked_noise_estimate
     has_normals = cloud.has_normals
     kept, outliers = {}, []
 
@@ -391,21 +406,25 @@ def _global_noise(client, cloud, output, tiles, quiet):
     if not h > 0:
         h = max(float(np.load(path, mmap_mode="r")[-1]) for path in radii if kept[radii.index(path)])
     exponent = int(np.frexp(h)[1]) + 1 if h > 0 else 0  # ilogb(h) + 2
-    futures = [client.submit(tile_tasks.tile_noise_sample, output, t, has_normals, center, exponent, NOISE_SAMPLE,
-                             retries=3, pure=False) for t in range(tiles)]
-    samples = client.gather(futures)
-    index = np.concatenate([s[0] for s in samples])
-    q = np.concatenate([s[1] for s in samples])
-    owner = np.concatenate([np.full(len(s[0]), t) for t, s in enumerate(samples)])
-    chosen = tile_tasks.smallest_keys(index, q, NOISE_SAMPLE)
+    # the smallest keys of the tiles' samples merged as they come (the keys
+    # are distinct), so that the driver holds two samples, not one per tile
+    pool = [np.empty(0, np.int64), np.empty((0, 3)), np.empty(0, np.int64)]
+
+    def sampled(t, value):
+        index = np.concatenate([pool[0], value[0]])
+        q = np.concatenate([pool[1], value[1]])
+        owner = np.concatenate([pool[2], np.full(len(value[0]), t)])
+        rows = tile_tasks.smallest_keys(index, q, NOISE_SAMPLE)
+        pool[:] = index[rows], q[rows], owner[rows]
+    _run_tasks(client, tile_tasks.tile_noise_sample,
+               [(t, (output, t, has_normals, center, exponent, NOISE_SAMPLE)) for t in range(tiles)],
+               "noise sample", cloud.count, True, sampled)
+    index, _, owner = pool
     futures = [client.submit(tile_tasks.tile_noise_neighbors, output, t, has_normals, center, exponent,
-                             np.sort(index[chosen][owner[chosen] == t]), NOISE_NEIGHBORS, retries=3, pure=False)
-               for t in range(tiles) if np.any(owner[chosen] == t)]
-    found = client.gather(futures)
-    index = np.concatenate([f[0] for f in found])
-    q = np.concatenate([f[1] for f in found])
-    _, rows = np.unique(index, return_index=True)
-    estimate = _unchecked_noise_estimate(q[rows])
+                             np.sort(index[owner == t]), NOISE_NEIGHBORS, retries=3, pure=False)
+               for t in range(tiles) if np.any(owner == t)]
+    # pooled on a worker: the neighbors number up to 24 times the sample
+    estimate = client.submit(tile_tasks.pooled_noise_estimate, futures, retries=3, pure=False).result()
     if not estimate.spacing > 0:
         raise TileError(f"{cloud.path}: {cloud.count} points; the sample spacing, which sets the tiles' halos and "
                         "radii, is estimated from each point's 24 nearest neighbors and could not be: a tiled "
