@@ -15,6 +15,7 @@ file (``output_files``).
 import hashlib
 import json
 import math
+import mmap
 import os
 
 import numpy as np
@@ -389,6 +390,17 @@ def read_part(path, layers):
     return np.memmap(path, dtype=part_dtype(layers), mode="r", offset=len(part_header(path)))
 
 
+def _mapped_records(path, dtype, offset, writable=False):
+    """The records of ``dtype`` from ``offset`` to the end of the file ``path``,
+    mapped into memory, and the mapping: its ``madvise(mmap.MADV_DONTNEED)``
+    lets go of the pages touched so far (the kernel's cache keeps them, and
+    writes back those written), so that the process's memory does not grow
+    with the file as it goes through it."""
+    with open(path, "r+b" if writable else "rb") as f:
+        mapping = mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_WRITE if writable else mmap.ACCESS_READ)
+    return np.frombuffer(mapping, dtype, offset=offset), mapping
+
+
 def merge_parts(path, part_paths, layers, descriptions, count):
     """One ``curvatures.ply`` of ``count`` points in input order from the parts
     (the program's fields; each part's records go to their input indices)."""
@@ -399,7 +411,7 @@ def merge_parts(path, part_paths, layers, descriptions, count):
         with open(temporary, "wb") as f:
             f.write(header)
             f.truncate(len(header) + count * dtype.itemsize)
-        out = np.memmap(temporary, dtype=dtype, mode="r+", offset=len(header), shape=(count,))
+        out, mapping = _mapped_records(temporary, dtype, len(header), writable=True)
         for part_path in part_paths:
             part = read_part(part_path, layers)
             for start in range(0, len(part), MERGE_CHUNK):
@@ -414,8 +426,10 @@ def merge_parts(path, part_paths, layers, descriptions, count):
                     values[f"shape_index_{name}"] = shape_index(k1, k2)
                     values[f"curvedness_{name}"] = curvedness(k1, k2)
                 out[block["input_index"].astype(np.int64)] = values
-        out.flush()
+                mapping.madvise(mmap.MADV_DONTNEED)  # a block's records lie anywhere in the file
         del out
+        mapping.flush()
+        mapping.close()
     atomic_write(path, write)
 
 
@@ -426,19 +440,19 @@ def merge_parts_las(path, merged_ply, layers, cloud):
     points at a power-of-ten scale; the layers' values as named extra bytes
     (as ``Result.write_las``)."""
     from . import _native
-    records = np.memmap(merged_ply, dtype=part_dtype(layers, with_index=False), mode="r",
-                        offset=len(part_header(merged_ply)))
+    records, mapping = _mapped_records(merged_ply, part_dtype(layers, with_index=False), len(part_header(merged_ply)))
     count = len(records)
     if cloud.las is not None:
         info = dict(cloud.las)
         field_chunks = cloud.las_fields(LAS_RECORDS_MADE)
     else:
         low, high = np.full(3, np.inf), np.full(3, -np.inf)
-        for start in range(0, count, LAS_CHUNK):
-            block = records[start:start + LAS_CHUNK]
+        for start in range(0, count, READ_CHUNK):
+            block = records[start:start + READ_CHUNK]
             for k, axis in enumerate("xyz"):
                 low[k] = min(low[k], float(block[axis].min()))
                 high[k] = max(high[k], float(block[axis].max()))
+            mapping.madvise(mmap.MADV_DONTNEED)
         scale, offset = _native.las_scale(list(low), list(high))
         info = {"scale": scale, "offset": offset, "rgb": False}
         field_chunks = ((start, None) for start in range(0, count, LAS_CHUNK))
@@ -473,6 +487,7 @@ def merge_parts_las(path, merged_ply, layers, cloud):
                     data, stats = _native.las_records(points, block["outlier"].astype(bool),
                                                       [layer_arrays(block, name) for name in layers], part, info)
                     f.write(data)
+                    mapping.madvise(mmap.MADV_DONTNEED)
                     low = np.minimum(low, stats["min"])
                     high = np.maximum(high, stats["max"])
                     by_return += np.array(stats["by_return"], np.uint64)
