@@ -126,11 +126,15 @@ def _key_value(key):
     return float(_ordered_keys(np.array([key], dtype=np.int64).view(np.float64)).view(np.float64)[0])
 
 
-def _kth_smallest(paths, k):
-    """The ``k``-th smallest (from 0) of the values of sorted ``.npy`` files
-    pooled, exactly: a bisection over the doubles' bit patterns, counting
-    with a binary search in each file (memory-mapped)."""
-    arrays = [a for a in (np.load(path, mmap_mode="r") for path in paths) if len(a)]
+def _sorted_values(paths):
+    """The values of the sorted ``.npy`` files ``paths`` that hold any, memory-mapped."""
+    return [a for a in (np.load(path, mmap_mode="r") for path in paths) if len(a)]
+
+
+def _kth_smallest(arrays, k):
+    """The ``k``-th smallest (from 0) of the values of sorted arrays pooled,
+    exactly: a bisection over the doubles' bit patterns, counting with a
+    binary search in each array."""
     lo = int(min(_ordered_keys(a[:1])[0] for a in arrays))
     hi = int(max(_ordered_keys(a[-1:])[0] for a in arrays))
     while lo < hi:  # the smallest value with more than k values at or below it
@@ -149,13 +153,13 @@ def _scale_of_closing_values(paths, coverage):
     order, of the pooled values of ranks ``coverage n`` up to, not including,
     ``(coverage + 0.9 (1 - coverage)) n``; only the values from the first of
     them up are read."""
-    arrays = [a for a in (np.load(path, mmap_mode="r") for path in paths) if len(a)]
+    arrays = _sorted_values(paths)
     n = sum(len(a) for a in arrays)
     if n == 0:
         return float("inf")
     first = min(n - 1, int(coverage * n))
     last = max(first + 1, min(n, int((coverage + 0.9 * (1 - coverage)) * n)))
-    start = _kth_smallest(paths, first)
+    start = _kth_smallest(arrays, first)
     below = sum(int(np.searchsorted(a, start, side="left")) for a in arrays)
     tail = np.sort(np.concatenate([a[int(np.searchsorted(a, start, side="left")):] for a in arrays]))
     return float(np.cumsum(tail[first - below:last - below])[-1] / (last - first))
@@ -397,14 +401,15 @@ def _global_noise(client, cloud, output, tiles, quiet):
     _run_tasks(client, tile_tasks.tile_outliers, [(t, (output, t, has_normals)) for t in range(tiles)],
                "outliers", cloud.count, quiet, outliers_done)
     n = sum(kept.values())
-    center = [_kth_smallest([tile_partition.tile_path(output, t, f"axis{axis}.npy") for t in range(tiles)], n // 2)
+    center = [_kth_smallest(_sorted_values([tile_partition.tile_path(output, t, f"axis{axis}.npy")
+                                            for t in range(tiles)]), n // 2)
               for axis in range(3)]
     _run_tasks(client, tile_tasks.tile_half_radii, [(t, (output, t, has_normals, center)) for t in range(tiles)],
                "working frame", cloud.count, True, lambda t, value: None)
-    radii = [tile_partition.tile_path(output, t, "radius.npy") for t in range(tiles)]
+    radii = _sorted_values([tile_partition.tile_path(output, t, "radius.npy") for t in range(tiles)])
     h = _kth_smallest(radii, n // 2)
     if not h > 0:
-        h = max(float(np.load(path, mmap_mode="r")[-1]) for path in radii if kept[radii.index(path)])
+        h = max(float(a[-1]) for a in radii)
     exponent = int(np.frexp(h)[1]) + 1 if h > 0 else 0  # ilogb(h) + 2
     # the smallest keys of the tiles' samples merged as they come (the keys
     # are distinct), so that the driver holds two samples, not one per tile
