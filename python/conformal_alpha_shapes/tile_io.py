@@ -224,8 +224,9 @@ def _open_xyz(path):
 LAS_CHUNK = 1 << 20
 # Points read at a time where the chunks' size changes no value.
 READ_CHUNK = 1 << 18
-# Records of the parts merged at a time (about 500 bytes each with five layers).
-MERGE_CHUNK = 1 << 15
+# Records of the parts merged at a time: written at scattered input indices,
+# each may touch a page of its own (4 kB), which the driver holds until the block is done.
+MERGE_CHUNK = 1 << 12
 # LAS records of the merged file made at a time (the values in double, about 3 kB each with five layers).
 LAS_RECORDS_MADE = 1 << 13
 # LAS records read by one call of the native reader (about 100 bytes each as it reads them).
@@ -413,7 +414,7 @@ def merge_parts(path, part_paths, layers, descriptions, count):
             f.truncate(len(header) + count * dtype.itemsize)
         out, mapping = _mapped_records(temporary, dtype, len(header), writable=True)
         for part_path in part_paths:
-            part = read_part(part_path, layers)
+            part, part_mapping = _mapped_records(part_path, part_dtype(layers), len(part_header(part_path)))
             for start in range(0, len(part), MERGE_CHUNK):
                 block = part[start:start + MERGE_CHUNK]
                 values = np.empty(len(block), dtype)
@@ -427,6 +428,7 @@ def merge_parts(path, part_paths, layers, descriptions, count):
                     values[f"curvedness_{name}"] = curvedness(k1, k2)
                 out[block["input_index"].astype(np.int64)] = values
                 mapping.madvise(mmap.MADV_DONTNEED)  # a block's records lie anywhere in the file
+                part_mapping.madvise(mmap.MADV_DONTNEED)
         del out
         mapping.flush()
         mapping.close()
