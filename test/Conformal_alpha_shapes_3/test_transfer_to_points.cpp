@@ -43,8 +43,6 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
 {
   cas3_test::Pipeline_without_cap sphere;
   const std::vector<Point>& pts = sphere.pts;
-  const Analysis& analysis = sphere.analysis;
-  Analysis::Surface& surface = sphere.surface;
   const std::vector<CAS3::Point_curvature<K> >& c = sphere.values;
 #ifdef CGAL_LINKED_WITH_TBB
   {
@@ -52,7 +50,7 @@ BOOST_AUTO_TEST_CASE(points_off_the_surface_take_the_nearest_surface_values)
     // filled in parallel, the others serially
     tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
     const std::vector<CAS3::Point_curvature<K> > serial =
-      analysis.estimate_curvatures(surface, {CAS3::Neighborhood::rings(2)}).front();
+      sphere.analysis.estimate_curvatures(sphere.surface, {CAS3::Neighborhood::rings(2)}).front();
     std::size_t differing = 0;
     for(std::size_t i = 0; i < c.size(); ++i)
       differing += same_bits(c[i], serial[i]) ? 0 : 1;
