@@ -56,7 +56,9 @@
 // The pipeline is called in one place only: run_pipeline().
 // --check-truth compares the generators' truth with closed forms and exits.
 // --write-points DIR also writes each synthetic sample as DIR/NAME_N_NOISE.xyz
-// (the manual's bump figures are made from dent_bumps_20000_0.xyz).
+// and its truth, the true normal, H and K of each point, as
+// DIR/NAME_N_NOISE_truth.txt (the manual's bump figures are made from
+// dent_bumps_20000_0.xyz).
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -531,6 +533,11 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
     out.precision(17);
     for(const Point& p : s.points)
       out << p << "\n";
+    std::snprintf(name, sizeof name, "_%zu_%g_truth.txt", s.points.size(), noise);
+    std::ofstream truth(o.write_points + "/" + names.front() + name);
+    truth.precision(17);
+    for(std::size_t i = 0; i < s.points.size(); ++i)
+      truth << s.normals[i] << " " << s.mean_curvature[i] << " " << s.gaussian_curvature[i] << "\n";
   }
   std::vector<Layer> layers;
   std::string failure;

@@ -34,6 +34,7 @@
 #include <random>
 #include <set>
 #include <thread>
+#include <utility>
 #include <vector>
 
 // Every name of this file is in its own namespace: the test runner compiles
@@ -900,6 +901,36 @@ BOOST_AUTO_TEST_CASE(automatic_choice_settled_by_a_prefix_is_the_whole_choice)
   BOOST_TEST_MESSAGE("settled prefixes " << settled << ", unsettled ones that choose otherwise " << unsettled_and_different);
   BOOST_TEST(settled > 10000);
   BOOST_TEST(unsettled_and_different > 1000);
+}
+
+// The automatic radius's choice adds half the mean square of the bias that
+// each adjacent candidate's change implies at the chosen radius, under a
+// bias growing as r^2 (the manual, "Uncertainty"): radii 2, 4 and 8 with H
+// 1, 1.1 and 1.5 imply 0.1 x 16 / 12 and 0.4 x 16 / 48 at radius 4.
+BOOST_AUTO_TEST_CASE(automatic_choice_uncertainty_is_the_bias_its_neighbors_imply)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  std::vector<I::Candidate_fit> fits;
+  for(const auto& [radius, H] : {std::pair<double, double>{2, 1.0}, {4, 1.1}, {8, 1.5}})
+  {
+    I::Candidate_fit fit;
+    fit.curvature.normal = fit.curvature.d1 = fit.curvature.d2 = I::Vec3::UnitZ();
+    fit.curvature.k1 = fit.curvature.k2 = H;
+    fit.radius = radius;
+    fits.push_back(fit);
+  }
+  I::Estimate_uncertainty fit;
+  fit.H = 0.01;
+  fit.K = 0.02;
+  const I::Estimate_uncertainty u = I::choice_uncertainty(fits, fits[1], fit);
+  const double below = 0.1 * 16 / 12, above = 0.4 * 16 / 48;
+  BOOST_TEST(u.H == std::sqrt(0.01 * 0.01 + (below * below + above * above) / 4), boost::test_tools::tolerance(1e-12));
+  // K = H^2 here: the changes 0.21 and 1.04
+  const double below_K = 0.21 * 16 / 12, above_K = 1.04 * 16 / 48;
+  BOOST_TEST(u.K == std::sqrt(0.02 * 0.02 + (below_K * below_K + above_K * above_K) / 4), boost::test_tools::tolerance(1e-12));
+  // at the first candidate only the one above counts
+  const I::Estimate_uncertainty first = I::choice_uncertainty(fits, fits[0], fit);
+  BOOST_TEST(first.H == std::sqrt(0.01 * 0.01 + std::pow(0.1 * 4 / 12, 2) / 2), boost::test_tools::tolerance(1e-12));
 }
 
 // The nested balls found level by level (the automatic rule searches the

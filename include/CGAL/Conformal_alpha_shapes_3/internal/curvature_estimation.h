@@ -212,15 +212,18 @@ inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double r
 }
 
 // The uncertainty of an automatic rule's choice `chosen` among `candidates`:
-// the fit's, and in quadrature half the mean square change of the values to
-// the adjacent candidates (a radius chosen for its least estimated error is
-// where the estimate of that error is most often too small; the change from
-// one candidate to the next is what a slightly different choice would give,
-// and its variance is twice that of either estimate).
+// the fit's, and in quadrature half the mean square of the bias that each
+// adjacent candidate's change implies at the chosen radius, the change
+// scaled by r^2 / |r_j^2 - r^2| as a bias growing with r^2 would be (a
+// radius chosen for its least estimated error is where the estimate of that
+// error is most often too small, and the step to the next candidate shows
+// the bias that the fit over all radii smooths away where the curvature
+// varies at the radius's scale).
 inline Estimate_uncertainty choice_uncertainty(const std::vector<Candidate_fit>& candidates,
                                                const Candidate_fit& chosen, Estimate_uncertainty u)
 {
   const std::size_t i = std::size_t(&chosen - candidates.data());
+  const double r2 = chosen.radius * chosen.radius;
   double dH = 0, dK = 0;
   int count = 0;
   for(std::size_t j : {i - 1, i + 1})
@@ -229,7 +232,8 @@ inline Estimate_uncertainty choice_uncertainty(const std::vector<Candidate_fit>&
       continue;
     const Local_curvature& a = chosen.curvature;
     const Local_curvature& b = candidates[j].curvature;
-    const double h = (a.k1 + a.k2 - b.k1 - b.k2) / 2, k = a.k1 * a.k2 - b.k1 * b.k2;
+    const double scale = r2 / std::abs(candidates[j].radius * candidates[j].radius - r2);
+    const double h = scale * (a.k1 + a.k2 - b.k1 - b.k2) / 2, k = scale * (a.k1 * a.k2 - b.k1 * b.k2);
     if(!std::isfinite(h) || !std::isfinite(k))
       continue;
     dH += h * h;
