@@ -460,11 +460,14 @@ Surface_mesh rough_sphere(std::size_t n)
 
 // smoothing_radius changes the uncertainties and nothing else: a fit
 // smaller than the smoothing counts (r / smoothing_radius)^2 of the noise,
-// one at least as large counts all of it.
+// one at least as large counts all of it. The noise given, 0.1, is more
+// than three times the residuals (the bumps, 0.007) even where a quarter of
+// it counts: the coverage factor of the residuals' few degrees of freedom
+// stays near 1 and does not offset the lower noise.
 BOOST_AUTO_TEST_CASE(smoothing_radius_lowers_the_noise_of_smaller_fits_only)
 {
   const Surface_mesh mesh = rough_sphere(6000);
-  const double radius = 0.08, noise = 0.01;
+  const double radius = 0.08, noise = 0.1;
   auto run = [&](double smoothing) {
     auto h_map = get(CGAL::dynamic_vertex_property_t<double>(), mesh);
     auto u_map = get(CGAL::dynamic_vertex_property_t<CAS3::Curvature_uncertainty<K> >(), mesh);
@@ -931,6 +934,33 @@ BOOST_AUTO_TEST_CASE(automatic_choice_uncertainty_is_the_bias_its_neighbors_impl
   // at the first candidate only the one above counts
   const I::Estimate_uncertainty first = I::choice_uncertainty(fits, fits[0], fit);
   BOOST_TEST(first.H == std::sqrt(0.01 * 0.01 + std::pow(0.1 * 4 / 12, 2) / 2), boost::test_tools::tolerance(1e-12));
+}
+
+// A fixed radius's noise part widens by Student's t coverage factor of its
+// residuals' effective degrees of freedom (the manual, "Uncertainty"):
+// t_0.975 over z_0.975 is 12.706 / 1.960 with one degree, 3.182 / 1.960
+// with three; a known sample noise far above the residuals leaves it as it is.
+BOOST_AUTO_TEST_CASE(fixed_radius_uncertainty_widens_for_few_residual_degrees)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  const double z = 1.959964;
+  BOOST_TEST(I::t_coverage_factor(1) == 12.7062 / z, boost::test_tools::tolerance(0.02));
+  BOOST_TEST(I::t_coverage_factor(3) == 3.18245 / z, boost::test_tools::tolerance(0.02));
+  BOOST_TEST(I::t_coverage_factor(30) == 2.04227 / z, boost::test_tools::tolerance(0.02));
+  BOOST_TEST(I::t_coverage_factor(1e5) == 1, boost::test_tools::tolerance(1e-4));
+  BOOST_TEST(std::isinf(I::t_coverage_factor(0.5)));
+  I::Quadric_fit_error e;
+  e.noise = 0.01;
+  e.degrees_of_freedom = 3;
+  e.per_noise = e.per_noise_K = e.per_noise_normal = 10;
+  const auto counted = I::fit_uncertainty(e, 1, I::Bias_rates(), 0, 0, I::Residual_degrees::COUNTED);
+  const auto ignored = I::fit_uncertainty(e, 1, I::Bias_rates(), 0, 0, I::Residual_degrees::IGNORED);
+  BOOST_TEST(ignored.H == 0.1, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(counted.H / ignored.H == I::t_coverage_factor(3), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(counted.K / ignored.K == I::t_coverage_factor(3), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(counted.H_noise == counted.H, boost::test_tools::tolerance(1e-12));
+  const auto known = I::fit_uncertainty(e, 1, I::Bias_rates(), 0.1, 0, I::Residual_degrees::COUNTED);
+  BOOST_TEST(known.H == std::sqrt(0.0101) * 10, boost::test_tools::tolerance(0.001));
 }
 
 // The nested balls found level by level (the automatic rule searches the

@@ -753,46 +753,55 @@ BOOST_AUTO_TEST_CASE(the_automatic_layer_is_the_same_whatever_radii_beside_it)
   BOOST_TEST(differ == 0u);
 }
 
-// The uncertainties are calibrated (the manual, "Uncertainty"): on a noisy
-// ellipsoid, in every layer of the default job, most of the points' H and K
-// errors lie within two standard uncertainties, not all of them, and the
-// median uncertainty is of the size of the median error: a guard against
-// uncertainties off by a factor, with bounds wider than the measured ones.
+// The uncertainties are calibrated (the manual, "Uncertainty"): on a clean
+// and a noisy ellipsoid, in every layer of the default job, most of the
+// points' H and K errors lie within two standard uncertainties, not all of
+// them, and the median uncertainty is of the size of the median error: a
+// guard against uncertainties off by a factor, with bounds wider than the
+// measured ones. On the clean one the 2-spacing fits have about three
+// residual degrees of freedom: without their coverage factor, 85% of the
+// values are within two sigma at 8,000 points, 93% with it.
 BOOST_AUTO_TEST_CASE(uncertainties_are_calibrated)
 {
-  Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(invariance_points, 1, 0.8, 0.6);
-  cas3_analytic::add_normal_noise(s, 0.1, 5);
-  const auto layers = CAS3::multiscale_curvatures(s.points);
-  for(std::size_t l = 0; l < layers.size(); ++l)
+  for(const double noise : {0.0, 0.1})
   {
-    const CAS3::Curvature_layer<K>& layer = layers[l];
-    std::vector<double> eH, sH;
-    std::size_t H_in = 0, K_in = 0;
-    for(std::size_t i = 0; i < s.points.size(); ++i)
+    Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(invariance_points, 1, 0.8, 0.6);
+    if(noise > 0)
+      cas3_analytic::add_normal_noise(s, noise, 5);
+    const auto layers = CAS3::multiscale_curvatures(s.points);
+    for(std::size_t l = 0; l < layers.size(); ++l)
     {
-      const CAS3::Point_curvature<K>& c = layer.points[i];
-      if(!c.on_surface() || !std::isfinite(c.mean_curvature))
-        continue;
-      const double e_H = std::abs(c.mean_curvature - s.mean_curvature[i]);
-      eH.push_back(e_H);
-      sH.push_back(c.uncertainty.mean_curvature);
-      H_in += e_H <= 2 * c.uncertainty.mean_curvature ? 1 : 0;
-      K_in += std::abs(c.gaussian_curvature - s.gaussian_curvature[i]) <= 2 * c.uncertainty.gaussian_curvature ? 1 : 0;
-      BOOST_REQUIRE(c.uncertainty.normal_degrees >= 0);
-      // the noise's part of the whole
-      BOOST_REQUIRE(c.uncertainty.mean_curvature_noise > 0);
-      BOOST_REQUIRE(c.uncertainty.mean_curvature_noise <= c.uncertainty.mean_curvature * (1 + 1e-12));
+      const CAS3::Curvature_layer<K>& layer = layers[l];
+      std::vector<double> eH, sH;
+      std::size_t H_in = 0, K_in = 0;
+      for(std::size_t i = 0; i < s.points.size(); ++i)
+      {
+        const CAS3::Point_curvature<K>& c = layer.points[i];
+        if(!c.on_surface() || !std::isfinite(c.mean_curvature))
+          continue;
+        const double e_H = std::abs(c.mean_curvature - s.mean_curvature[i]);
+        eH.push_back(e_H);
+        sH.push_back(c.uncertainty.mean_curvature);
+        H_in += e_H <= 2 * c.uncertainty.mean_curvature ? 1 : 0;
+        K_in += std::abs(c.gaussian_curvature - s.gaussian_curvature[i]) <= 2 * c.uncertainty.gaussian_curvature ? 1 : 0;
+        BOOST_REQUIRE(c.uncertainty.normal_degrees >= 0);
+        // the noise's part of the whole
+        BOOST_REQUIRE(c.uncertainty.mean_curvature_noise > 0);
+        BOOST_REQUIRE(c.uncertainty.mean_curvature_noise <= c.uncertainty.mean_curvature * (1 + 1e-12));
+      }
+      BOOST_REQUIRE(eH.size() > s.points.size() / 2);
+      const double n = double(eH.size());
+      const double ratio = cas3_test::quantile(sH, 0.5) / cas3_test::quantile(eH, 0.5);
+      BOOST_TEST_MESSAGE("noise " << noise << ", layer " << l << ": H within 2 sigma "
+                         << double(H_in) / n << ", K " << double(K_in) / n << ", median sigma / error " << ratio);
+      const bool two_spacings = layer.neighborhood.kind() == CAS3::Neighborhood::SPACINGS
+                                && layer.neighborhood.value() == 2;
+      BOOST_TEST(double(H_in) / n >= (noise > 0 ? 0.75 : two_spacings ? 0.9 : 0.85));
+      BOOST_TEST(double(H_in) / n <= 0.999);
+      BOOST_TEST(double(K_in) / n >= 0.75);
+      BOOST_TEST(ratio >= 0.5);
+      BOOST_TEST(ratio <= 5);
     }
-    BOOST_REQUIRE(eH.size() > s.points.size() / 2);
-    const double n = double(eH.size());
-    const double ratio = cas3_test::quantile(sH, 0.5) / cas3_test::quantile(eH, 0.5);
-    BOOST_TEST_MESSAGE("layer " << l << ": H within 2 sigma "
-                       << double(H_in) / n << ", K " << double(K_in) / n << ", median sigma / error " << ratio);
-    BOOST_TEST(double(H_in) / n >= 0.75);
-    BOOST_TEST(double(H_in) / n <= 0.999);
-    BOOST_TEST(double(K_in) / n >= 0.75);
-    BOOST_TEST(ratio >= 0.5);
-    BOOST_TEST(ratio <= 5);
   }
 }
 

@@ -188,20 +188,62 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
   return rates;
 }
 
+// Student's t quantile 0.975 with `nu` degrees of freedom over the normal
+// law's: the factor by which a standard uncertainty whose variance was
+// estimated with `nu` degrees of freedom widens so that twice it covers as
+// often as it would with the variance known (an expanded uncertainty's
+// coverage factor). Interpolated in a table (within 2%) from 0.5 to 1024
+// degrees, the expansion's first term above; infinite at 0.5 or less.
+// A table rather than Boost.Math's quantile, whose series assert under
+// CGAL's -frounding-math.
+inline double t_coverage_factor(double nu)
+{
+  // t_0.975(2^(k / 4 - 1)) / z_0.975 for k = 0, ..., 44
+  static constexpr double table[45] = {
+    83.9595, 36.0169, 18.0072, 10.2387, 6.48288, 4.48852, 3.34464, 2.64555, 2.19527, 1.8923, 1.6809, 1.52881,
+    1.41658, 1.33197, 1.26704, 1.21645, 1.17655, 1.14475, 1.11918, 1.09848, 1.0816, 1.06779, 1.05642, 1.04704,
+    1.03927, 1.03282, 1.02746, 1.023, 1.01927, 1.01615, 1.01355, 1.01137, 1.00954, 1.00801, 1.00673, 1.00565,
+    1.00475, 1.00399, 1.00335, 1.00282, 1.00237, 1.00199, 1.00167, 1.00141, 1.00118};
+  constexpr double z = 1.959963984540054;
+  if(!(nu > 0.5))
+    return std::numeric_limits<double>::infinity();
+  const double x = (std::log2(nu) + 1) * 4;
+  if(x >= 44)
+    return 1 + (z * z + 1) / (4 * nu);
+  const int k = int(x);
+  return table[k] * std::pow(table[k + 1] / table[k], x - k);  // linear in the logarithms
+}
+
+// Whether fit_uncertainty() widens the noise's part for the residual
+// variance's few degrees of freedom.
+enum class Residual_degrees { COUNTED, IGNORED };
+
 // The uncertainty of a fit at radius `radius` whose bias grows at `rates`,
 // the noise's and the bias's added in quadrature. Below `smoothed_reach`,
 // the radius over which the points were smoothed (0: not smoothed), the
 // sample's noise counts as (radius / smoothed_reach)^2 of itself: a fit
 // smaller than the smoothing sees a smooth field, whose curvature error
 // grows as 1 / r^2 rather than independent noise's 1 / r^3.
+// With `Residual_degrees::COUNTED` the noise's part is widened by
+// t_coverage_factor() of its effective degrees of freedom (Welch and
+// Satterthwaite's: the sample's noise is known, the residuals' estimated
+// from the fit's few): a 2-spacing fit has about three, and its errors over
+// a residual standard deviation have the long tails of Student's t.
 inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, const Bias_rates& rates,
-                                            double sample_noise, double smoothed_reach = 0)
+                                            double sample_noise, double smoothed_reach,
+                                            Residual_degrees residual_degrees)
 {
   Estimate_uncertainty u;
   if(!(e.per_noise > 0))
     return u;
   const double below = smoothed_reach > 0 ? (std::min)(1., (radius / smoothed_reach) * (radius / smoothed_reach)) : 1.;
-  const double noise = fit_noise(e, below * sample_noise);
+  double noise = fit_noise(e, below * sample_noise);
+  const double residual = e.noise * e.noise;
+  if(residual_degrees == Residual_degrees::COUNTED && residual > 0 && std::isfinite(residual))
+  {
+    const double share = noise * noise / residual;  // the whole variance over the residuals'
+    noise *= t_coverage_factor(e.degrees_of_freedom * share * share);
+  }
   const double r4 = radius * radius * radius * radius;
   const double se_H = noise * e.per_noise, se_K = noise * e.per_noise_K;
   u.H = std::sqrt(se_H * se_H + rates.squared_H * r4);
@@ -635,9 +677,13 @@ private:
         if(!ws.candidates.empty())
         {
           const Candidate_fit& chosen = choose_by_least_squared_error(ws.candidates, m_sample_noise);
+          // the change to the adjacent candidates already shows how far the
+          // chosen fit's residuals miss; widened as well, the automatic
+          // values would be within two sigma at 99% of the points
           out[r] = Vertex_estimate{chosen.curvature, chosen.radius,
                                    choice_uncertainty(ws.candidates, chosen,
-                                     fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothed_reach))};
+                                     fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothed_reach,
+                                                     Residual_degrees::IGNORED))};
         }
       }
       else if(rule.radius > 0)
@@ -645,7 +691,8 @@ private:
         const Radius_fit& q = ws.fits[radius_level(rule.radius)];
         if(q.defined)
           out[r] = Vertex_estimate{q.curvature, rule.radius,
-                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise, m_smoothed_reach)};
+                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise, m_smoothed_reach,
+                                                   Residual_degrees::COUNTED)};
         else
           to_widen.push_back(r);
       }
@@ -663,7 +710,8 @@ private:
         Radius_fit q;
         fit(f, ends[0], radius, radius, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise, m_smoothed_reach)};
+          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise, m_smoothed_reach,
+                                                                        Residual_degrees::COUNTED)};
       }
   }
 
@@ -698,7 +746,8 @@ private:
         Radius_fit q;
         fit(f, ends[ring], reach, length, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, Bias_rates(), m_sample_noise, m_smoothed_reach)};
+          out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, Bias_rates(), m_sample_noise,
+                                                                       m_smoothed_reach, Residual_degrees::COUNTED)};
       }
     }
   }
