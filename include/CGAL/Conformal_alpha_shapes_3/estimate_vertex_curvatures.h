@@ -57,7 +57,10 @@ struct Principal_curvatures_and_directions
 /// "Uncertainty"): one standard deviation of the error of `H`, of `K`, and
 /// of the normal's direction in degrees, from the fit's residuals, its
 /// neighbors' count and spread, the sample's noise and the bias that the
-/// radius implies; NaN where unknown (the Euler estimators, undefined values).
+/// radius implies; at a fixed radius the noise's part is widened for the
+/// residuals' few degrees of freedom, so that twice it covers the error as
+/// twice a known standard deviation would; NaN where unknown (the Euler
+/// estimators, undefined values).
 template <typename GT>
 struct Curvature_uncertainty
 {
