@@ -656,10 +656,11 @@ def front_closing_values(points, normals=None, *, denoise="auto", denoise_neighb
 
     The steps of ``multiscale_curvatures`` up to the front (the same checks,
     outliers, noise decisions, smoothing and shape, with the same keywords),
-    then for each point the upper quartile (the 19th smallest) of the
-    closing values (the largest conformal value among the faces of the front
-    at a vertex: the smallest scale at which its whole umbrella is in the
-    surface) of its vertex and the 23 nearest vertices of the front. The
+    then for each point the upper quartile (the 19th smallest of 24) of the
+    closing values of its vertex and the 23 nearest vertices of the front,
+    those not NaN (a vertex's closing value: the smallest scale at which the
+    complex holds a fan of facets around it, a value of its star that a
+    tile's halo does not change). The
     automatic scale "auto" (with extraction "front") is the mean of the
     sorted values that are not NaN of ranks 0.99 n to 0.999 n (a trimmed
     tail: no single value decides it), so the scale of a cloud split
@@ -667,8 +668,10 @@ def front_closing_values(points, normals=None, *, denoise="auto", denoise_neighb
     counted in one tile only).
 
     Returns:
-        (N,) float64: NaN for outliers, for points the front does not reach
-        and for all but the first of coincident points (they share a vertex).
+        (N,) float64: NaN for outliers, for points the front does not reach,
+        for points on the convex hull with no fan of finite facets around
+        them and for all but the first of coincident points (they share a
+        vertex).
     """
     job = _job(points, normals, denoise=denoise, denoise_neighbors=denoise_neighbors, threads=threads,
                progress=progress, spacing=spacing, noise=noise, scales=0, function="front_closing_values")

@@ -87,8 +87,7 @@ def assert_same_answer(points, one, summary, folder, a_tolerance, h_tolerance_99
     assert summary["spacing"] == pytest.approx(one.spacing, rel=1e-12)
     assert summary["noise"] == pytest.approx(one.noise, rel=1e-12)
     assert summary["denoised"] == one.denoised
-    # the automatic scale: pooled local closing values; the front's greedy
-    # choices differ at some points of a tile, which moves the statistic
+    # the automatic scale: the local closing values of all tiles pooled
     assert summary["a"][0] == pytest.approx(one["rauto"].a, rel=a_tolerance)
     merged = read_merged(folder, summary["layers"])
     assert len(merged) == len(points)
@@ -149,15 +148,15 @@ def test_normals_of_random_signs_orient_as_no_normals(client, tmp_path):
 
 def test_a_scan_in_tiles_equals_one_run(client, tmp_path):
     """building.ply (100,000 points of uneven density, with normals) in 4 tiles:
-    the automatic scale within 4% of one run's (measured +3.1%: the tiles'
-    fronts differ from one run's near the cuts, where the tiles' closing
-    values are larger)."""
+    the automatic scale within 0.2% of one run's (measured -0.09%: a
+    vertex's closing value is a value of its star, so a tile with its halo
+    gives its core one run's values but where the halo changes a pole)."""
     points, normals = cas.read_point_cloud(scan_path("building.ply"))
     np.save(tmp_path / "building.npy", np.hstack([points, normals]))
     summary = tiles.process_tiles(tmp_path / "building.npy", tmp_path / "out", tile_points=25_000, client=client,
                                   merge=True, quiet=True)
     assert summary["tiles"] == 4
-    assert_same_answer(points, cas.multiscale_curvatures(points, normals), summary, tmp_path / "out", 0.04)
+    assert_same_answer(points, cas.multiscale_curvatures(points, normals), summary, tmp_path / "out", 0.002)
 
 
 def test_the_merged_file_is_the_programs_format(scene_run):

@@ -89,6 +89,43 @@ BOOST_AUTO_TEST_CASE(scale_of_closing_values_is_a_trimmed_mean_of_the_tail)
   BOOST_CHECK_THROW(CAS3::scale_of_closing_values(values, 1.5), std::invalid_argument);
 }
 
+// A vertex's closing value is a value of its star: a piece of the cloud
+// whose halo is wider than the local feature size gives its core the whole
+// cloud's values (to rounding: the pieces' working frames differ), so that
+// tiles read one run's automatic scale from their own values.
+BOOST_AUTO_TEST_CASE(closing_values_are_those_of_the_star)
+{
+  Sample torus = cas3_analytic::torus_truth_sample<Point, Vector>(sheet_points, 1.0, 0.35);
+  cas3_analytic::add_normal_noise(torus, 0.1, 11);
+  const CAS3::Noise_estimate noise = CAS3::estimate_noise(torus.points);
+  const Analysis whole(torus.points.begin(), torus.points.end(), CAS3::parameters::noise_estimate(noise));
+  const double halo = 0.5;  // over the tube's radius, the farthest pole
+  std::vector<Point> piece;
+  for(const Point& p : torus.points)
+    if(p.x() < halo)
+      piece.push_back(p);
+  const Analysis part(piece.begin(), piece.end(), CAS3::parameters::noise_estimate(noise));
+  const std::vector<double> expected = whole.closing_values(), values = part.closing_values();
+  std::size_t core = 0, differing = 0, k = 0, finite = 0;
+  for(std::size_t i = 0; i < torus.points.size(); ++i)
+  {
+    if(!(torus.points[i].x() < halo))
+      continue;
+    const double value = values[k++];
+    if(torus.points[i].x() < 0)
+    {
+      ++core;
+      finite += std::isnan(value) ? 0 : 1;
+      const bool same = (std::isnan(value) && std::isnan(expected[i]))
+                        || std::abs(value - expected[i]) <= 1e-9 * std::abs(expected[i]);
+      differing += same ? 0 : 1;
+    }
+  }
+  BOOST_TEST(core > sheet_points / 3);
+  BOOST_TEST(finite > core * 99 / 100);
+  BOOST_TEST(differing == 0u);
+}
+
 BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
 {
   CAS3::internal::Advancing_front_soup soup;

@@ -206,9 +206,10 @@ public:
   /// Per input point, the local closing value of its vertex in the
   /// advancing front grown once (`Surface_front::local_closing_values()`),
   /// held by the first of the input points a vertex stands for (coincident
-  /// points share a vertex); NaN for the others, for outliers and for points
-  /// the front does not reach. The automatic scale with `ADVANCING_FRONT` is
-  /// `scale_of_closing_values()` of these with coverage 0.99.
+  /// points share a vertex); NaN for the others, for outliers and where
+  /// `Surface_front::local_closing_values()` is NaN. The automatic scale
+  /// with `ADVANCING_FRONT` is `scale_of_closing_values()` of these with
+  /// coverage 0.99.
   std::vector<double> closing_values() const
   {
     require_shape("closing_values");

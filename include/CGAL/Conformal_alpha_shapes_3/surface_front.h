@@ -8,6 +8,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/orient_surface_parts.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_output_maps.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/vertex_closing_value.h>
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/surface_report.h>
@@ -99,16 +100,15 @@ public:
 
   /*!
   The automatic scale: the smallest `a` at which the surface covers the
-  points. Each vertex of the front needs the largest conformal value among
-  its faces (its closing value) for its whole umbrella to be in the
-  complex; the scale returned is `scale_of_closing_values()` of the local
-  closing values (`local_closing_values()`) with this `coverage`: about
-  the `coverage` quantile of the closing values, read off their spatially
-  smoothed upper tail, so that a few vertices whose values a near tie of
-  the front's growth decided (rounding under a rigid motion of the input)
-  do not move it. At that scale, about that share of the surface's
-  vertices has its full umbrella, and the rest (a border that would need
-  larger facets, gaps in the sampling) is left as a border rather than
+  points. Each vertex of the front needs its closing value (the smallest
+  scale at which the complex holds a fan of facets around it,
+  `closing_values()`) for the surface to close around it; the scale
+  returned is `scale_of_closing_values()` of the local closing values
+  (`local_closing_values()`) with this `coverage`: about the `coverage`
+  quantile of the closing values, read off their spatially smoothed upper
+  tail, so that no few vertices decide it. At that scale, about that share
+  of the vertices can close, and the rest (a border that would need larger
+  facets, gaps in the sampling) is left as a border rather than
   bridged. On samples of closed or open surfaces, clean or noisy (after
   denoising), the surface at this scale holds over 99% of the points (the
   manual gives the measurements). It fails where the sample does not
@@ -125,30 +125,41 @@ public:
   }
 
   /*!
-  The closing value of every vertex of the shape, by `vertex_index()`: the
-  largest conformal value among its faces of the front, the smallest scale
-  at which its whole umbrella is in the surface; NaN for the vertices the
-  front does not reach.
+  The closing value of every vertex of the front, by `vertex_index()`: the
+  smallest conformal value at which the finite Delaunay facets around the
+  vertex that are in the complex hold a fan turning once around it (seen
+  along the axis to its pole), the scale from which the surface can close
+  around it. NaN for the vertices the front does not reach and for those
+  with no such fan (on the convex hull, their outside open). A value of the
+  vertex's star, not of the front's growth: the same in a piece of the
+  cloud whose halo holds the star and its vertices' poles as in the whole
+  cloud.
   */
   std::vector<double> closing_values() const
   {
     std::vector<double> closing(m_shape.number_of_vertices(), std::numeric_limits<double>::quiet_NaN());
-    for(std::size_t s : m_soup.shape_vertex)
-      closing[s] = 0.0;
-    for(std::size_t t = 0; t < m_soup.triangles.size(); ++t)
-      for(std::size_t s : m_soup.triangles[t])
-        closing[m_soup.shape_vertex[s]] = (std::max)(closing[m_soup.shape_vertex[s]], m_soup.values[t]);
+    std::vector<typename Shape::Vertex_handle> handle(m_shape.number_of_vertices());
+    for(typename Shape::Vertex_handle v : m_shape.finite_vertex_handles())
+      handle[v->vertex_index()] = v;
+    std::vector<std::size_t> reached(m_soup.shape_vertex);
+    std::sort(reached.begin(), reached.end());
+    reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+    internal::for_each_index<CGAL::Parallel_if_available_tag>(
+      reached.size(), [] { return internal::Closing_workspace<Shape>(); },
+      [&](std::size_t i, internal::Closing_workspace<Shape>& workspace) {
+        closing[reached[i]] = internal::vertex_closing_value(m_shape, handle[reached[i]], workspace);
+      });
     return closing;
   }
 
   /*!
   The local closing value of every vertex of the shape, by
-  `vertex_index()`: the upper quartile (the 19th smallest) of the closing
-  values of the vertex and its 23 nearest vertices of the front; NaN where
-  `closing_values()` is. `suggest_scale()` reads these, so the automatic
-  scale of a sample split into pieces (tiles with a halo of at least a few
-  spacings, the manual's "Tiled Processing on Dask") is
-  `scale_of_closing_values()` of the pieces' values pooled.
+  `vertex_index()`: the upper quartile (the 19th smallest of 24) of the
+  closing values of the vertex and its 23 nearest vertices of the front,
+  of those that are not NaN; NaN where `closing_values()` is.
+  `suggest_scale()` reads these, so the automatic scale of a sample split
+  into pieces (tiles with a halo, the manual's "Tiled Processing on Dask")
+  is `scale_of_closing_values()` of the pieces' values pooled.
   */
   std::vector<double> local_closing_values() const
   {
@@ -172,14 +183,17 @@ public:
     tree.build();
     const typename Search::Distance distance(position_map);
     const unsigned int neighbors = unsigned((std::min)(n, std::size_t(24)));
-    const std::size_t upper_quartile = (3 * std::size_t(neighbors)) / 4;
     internal::for_each_index<CGAL::Parallel_if_available_tag>(
       n, [] { return std::vector<double>(); },
       [&](std::size_t i, std::vector<double>& values) {
         const std::size_t s = m_soup.shape_vertex[i];
+        if(std::isnan(closing[s]))
+          return;
         values.clear();
         for(const auto& found : Search(tree, position[s], neighbors, 0, true, distance))
-          values.push_back(closing[found.first]);
+          if(!std::isnan(closing[found.first]))
+            values.push_back(closing[found.first]);
+        const std::size_t upper_quartile = (3 * values.size()) / 4;
         std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(upper_quartile), values.end());
         local[s] = values[upper_quartile];
       });
