@@ -89,41 +89,70 @@ BOOST_AUTO_TEST_CASE(scale_of_closing_values_is_a_trimmed_mean_of_the_tail)
   BOOST_CHECK_THROW(CAS3::scale_of_closing_values(values, 1.5), std::invalid_argument);
 }
 
-// A vertex's closing value is a value of its star: a piece of the cloud
-// whose halo is wider than the local feature size gives its core the whole
-// cloud's values (to rounding: the pieces' working frames differ), so that
-// tiles read one run's automatic scale from their own values.
-BOOST_AUTO_TEST_CASE(closing_values_are_those_of_the_star)
+// The number of points of `points` with x below `cut` whose closing value
+// differs (beyond 1e-9) between the whole cloud and its piece of x below
+// `cut + halo`, both given the whole cloud's noise estimate; and that of
+// those points.
+std::pair<std::size_t, std::size_t> closing_values_of_a_piece(const std::vector<Point>& points, double cut,
+                                                              double halo)
 {
-  Sample torus = cas3_analytic::torus_truth_sample<Point, Vector>(sheet_points, 1.0, 0.35);
-  cas3_analytic::add_normal_noise(torus, 0.1, 11);
-  const CAS3::Noise_estimate noise = CAS3::estimate_noise(torus.points);
-  const Analysis whole(torus.points.begin(), torus.points.end(), CAS3::parameters::noise_estimate(noise));
-  const double halo = 0.5;  // over the tube's radius, the farthest pole
+  const CAS3::Noise_estimate noise = CAS3::estimate_noise(points);
+  const Analysis whole(points.begin(), points.end(), CAS3::parameters::noise_estimate(noise));
   std::vector<Point> piece;
-  for(const Point& p : torus.points)
-    if(p.x() < halo)
+  for(const Point& p : points)
+    if(p.x() < cut + halo)
       piece.push_back(p);
   const Analysis part(piece.begin(), piece.end(), CAS3::parameters::noise_estimate(noise));
   const std::vector<double> expected = whole.closing_values(), values = part.closing_values();
-  std::size_t core = 0, differing = 0, k = 0, finite = 0;
-  for(std::size_t i = 0; i < torus.points.size(); ++i)
+  std::size_t core = 0, differing = 0, k = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
   {
-    if(!(torus.points[i].x() < halo))
+    if(!(points[i].x() < cut + halo))
       continue;
     const double value = values[k++];
-    if(torus.points[i].x() < 0)
+    if(points[i].x() < cut)
     {
       ++core;
-      finite += std::isnan(value) ? 0 : 1;
       const bool same = (std::isnan(value) && std::isnan(expected[i]))
                         || std::abs(value - expected[i]) <= 1e-9 * std::abs(expected[i]);
       differing += same ? 0 : 1;
     }
   }
-  BOOST_TEST(core > sheet_points / 3);
-  BOOST_TEST(finite > core * 99 / 100);
-  BOOST_TEST(differing == 0u);
+  return {core, differing};
+}
+
+// A vertex's closing value is a value of its star: a piece of the cloud
+// whose halo holds the stars and poles of its core gives the core the whole
+// cloud's values (to rounding: the pieces' working frames differ), so that
+// tiles read one run's automatic scale from their own values. On the torus
+// a halo over the tube's radius holds every pole. building.ply, an open
+// scan of flat walls, has far poles and long facets off its borders: with a
+// 40-spacing halo 31 of its 50,000 core values differ (the front's largest
+// face value, which the front's greedy growth decides, differed at 395,
+// and at 16 on the torus).
+BOOST_AUTO_TEST_CASE(closing_values_are_those_of_the_star)
+{
+  Sample torus = cas3_analytic::torus_truth_sample<Point, Vector>(sheet_points, 1.0, 0.35);
+  cas3_analytic::add_normal_noise(torus, 0.1, 11);
+  const std::pair<std::size_t, std::size_t> on_torus = closing_values_of_a_piece(torus.points, 0.0, 0.5);
+  BOOST_TEST(on_torus.first > sheet_points / 3);
+  BOOST_TEST(on_torus.second == 0u);
+#ifndef CAS3_SANITIZED
+  const std::vector<Point> building = cas3_test::read_points<Point>(cas3_test::test_data_file("building.ply"));
+  std::vector<double> x;
+  for(const Point& p : building)
+    x.push_back(p.x());
+  std::nth_element(x.begin(), x.begin() + std::ptrdiff_t(x.size() / 2), x.end());
+  const double spacing = CAS3::estimate_noise(building).spacing;
+  const std::pair<std::size_t, std::size_t> on_building =
+    closing_values_of_a_piece(building, x[x.size() / 2], 40 * spacing);
+  BOOST_TEST_MESSAGE("building.ply: " << on_building.second << " of " << on_building.first
+                                      << " core closing values differ");
+  BOOST_TEST(on_building.first > building.size() / 3);
+  BOOST_TEST(on_building.second <= on_building.first / 500);
+#else
+  BOOST_TEST_MESSAGE("sanitizer build: building.ply is tested in the Release build");
+#endif
 }
 
 BOOST_AUTO_TEST_CASE(soup_neighbors_pair_the_triangles_on_an_edge)
