@@ -23,8 +23,8 @@ The automatic scale of `extract_surface()` with the same
 `surface_extraction`: the smallest `a` at which its surface covers the
 share `coverage` of the sample.
 - `ADVANCING_FRONT`: `Surface_front::suggest_scale()`: `coverage` is the
-  share of the front's vertices whose whole umbrella of faces is in the
-  surface (default 0.99).
+  share of the front's vertices around which the complex holds a closed fan
+  of facets (default 0.99).
 - `SOLID_BOUNDARY`: `coverage` is the share of the input points on one
   connected part of the solid's boundary (default 0.9): below the scale at
   which the surface first closes, the walk enters the volume and what is
