@@ -125,11 +125,10 @@ std::pair<std::size_t, std::size_t> closing_values_of_a_piece(const std::vector<
 // whose halo holds the stars and poles of its core gives the core the whole
 // cloud's values (to rounding: the pieces' working frames differ), so that
 // tiles read one run's automatic scale from their own values. On the torus
-// a halo over the tube's radius holds every pole. building.ply, an open
-// scan of flat walls, has far poles and long facets off its borders: with a
-// 40-spacing halo 31 of its 50,000 core values differ (the front's largest
-// face value, which the front's greedy growth decides, differed at 395,
-// and at 16 on the torus).
+// a halo over the tube's radius holds every pole; building.ply, an open
+// scan of flat walls, has far poles and long facets off its borders, so a
+// few of its core values may differ (the front's greedy growth, which set
+// these values before, changes several times more).
 BOOST_AUTO_TEST_CASE(closing_values_are_those_of_the_star)
 {
   Sample torus = cas3_analytic::torus_truth_sample<Point, Vector>(sheet_points, 1.0, 0.35);
