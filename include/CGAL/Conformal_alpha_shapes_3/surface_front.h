@@ -9,6 +9,7 @@
 #include <CGAL/Conformal_alpha_shapes_3/internal/orient_surface_parts.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/surface_output_maps.h>
 #include <CGAL/Conformal_alpha_shapes_3/internal/vertex_closing_value.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/vertices_by_index.h>
 #include <CGAL/Conformal_alpha_shapes_3/interruption.h>
 #include <CGAL/Conformal_alpha_shapes_3/named_parameters.h>
 #include <CGAL/Conformal_alpha_shapes_3/surface_report.h>
@@ -138,9 +139,7 @@ public:
   std::vector<double> closing_values() const
   {
     std::vector<double> closing(m_shape.number_of_vertices(), std::numeric_limits<double>::quiet_NaN());
-    std::vector<typename Shape::Vertex_handle> handle(m_shape.number_of_vertices());
-    for(typename Shape::Vertex_handle v : m_shape.finite_vertex_handles())
-      handle[v->vertex_index()] = v;
+    const std::vector<typename Shape::Vertex_handle> handle = internal::vertices_by_index(m_shape);
     std::vector<std::size_t> reached(m_soup.shape_vertex);
     std::sort(reached.begin(), reached.end());
     reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
@@ -234,9 +233,7 @@ private:
     if(cas.dimension() < 3)
       return report;
 
-    std::vector<typename Shape::Vertex_handle> shape_vertex(cas.number_of_vertices());
-    for(typename Shape::Vertex_handle v : cas.finite_vertex_handles())
-      shape_vertex[v->vertex_index()] = v;
+    const std::vector<typename Shape::Vertex_handle> shape_vertex = internal::vertices_by_index(cas);
     auto point = [&](std::size_t s) { return shape_vertex[soup.shape_vertex[s]]->point(); };
     const bool has_reference = !reference_normals.empty();
     auto given = [&](std::size_t s) {

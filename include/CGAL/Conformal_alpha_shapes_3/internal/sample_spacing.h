@@ -5,6 +5,7 @@
 #define CGAL_CONFORMAL_ALPHA_SHAPES_3_INTERNAL_SAMPLE_SPACING_H
 
 #include <CGAL/Conformal_alpha_shapes_3/internal/for_each_index.h>
+#include <CGAL/Conformal_alpha_shapes_3/internal/vertices_by_index.h>
 
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
@@ -95,9 +96,7 @@ std::vector<double> kth_shortest_edge_lengths(const Dt& dt, const std::vector<ty
         if(e.second != none.second)
           keep(shortest[v], e);
 
-  std::vector<typename Dt::Vertex_handle> vertex(nv);  // by vertex index
-  for(const typename Dt::Vertex_handle v : dt.finite_vertex_handles())
-    vertex[v->vertex_index()] = v;
+  const std::vector<typename Dt::Vertex_handle> vertex = vertices_by_index(dt);
   std::vector<double> spacing(nv);
   for(std::size_t v = 0; v < nv; ++v)
   {
