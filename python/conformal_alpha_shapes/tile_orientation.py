@@ -15,6 +15,13 @@ MINIMUM_SEAM_POINTS = 20
 # the normals. Below it (about half, for normals of random signs, which the
 # tile recognized per sheet) it is oriented as without normals.
 FOLLOWED_SHARE = 0.75
+# One run's rule for a group of open sheets whose cones nearly cancel (a
+# terrain): below this share of the sum of its terms' sizes the cone does not
+# decide, and the group faces +z if its normals summed reach
+# MOSTLY_ALONG_Z_SHARE of their count (C++: nearly_flat_cone_share and
+# mostly_along_z_share in internal/orient_surface_parts.h).
+NEARLY_FLAT_CONE_SHARE = 0.25
+MOSTLY_ALONG_Z_SHARE = 0.5
 
 
 def tile_votes(folder, tile, names, first_names, states):
@@ -87,12 +94,27 @@ def not_following_normals(parts, s, small=False):
     return free
 
 
+def _group_vote(parts, s, group, relative):
+    """The side that a group of objects faces at scale ``s``, by its sign: the
+    cone it spans from the cloud's center, or where that nearly cancels and
+    the group mostly faces along z, its normals' z summed (one run's rule)."""
+    def summed(key, signed):
+        return sum(-parts[t][key][s][c] if signed and relative[(t, c)] else parts[t][key][s][c] for t, c in group
+                   if key in parts[t])
+    cone, up = summed("cones", True), summed("up", True)
+    if abs(cone) < NEARLY_FLAT_CONE_SHARE * summed("cone_sizes", False) \
+            and abs(up) >= MOSTLY_ALONG_Z_SHARE * summed("counts", False):
+        return up
+    return cone
+
+
 def orient(votes, parts, scales, has_normals):
     """Per tile and scale, the objects (``tile_partition.components``) its
     part is to carry turned over: an object is turned when its seam to the
     object it was reached from votes to disagree (from the largest object, by
     the strongest seams); each group of objects so joined faces away from the
-    cloud's center, as one run's sheets do (outward for a closed one). With
+    cloud's center, as one run's sheets do (outward for a closed one; up
+    where that nearly cancels and the group faces mostly along z). With
     input normals, nothing is turned where every object follows them
     (``FOLLOWED_SHARE``); otherwise those that do are never turned and the
     others (small ones too) are joined to them by their seams first."""
@@ -139,7 +161,7 @@ def orient(votes, parts, scales, has_normals):
                     if relative[(t, c)]:
                         turned[t][s].append(c)
                 continue
-            cone = sum(-parts[t]["cones"][s][c] if relative[(t, c)] else parts[t]["cones"][s][c] for t, c in group)
+            cone = _group_vote(parts, s, group, relative)
             for t, c in group:
                 if relative[(t, c)] ^ (cone < 0):
                     turned[t][s].append(c)

@@ -239,14 +239,18 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     seam_records["component"] = component[halo]
     seam_records["normal"] = np.moveaxis(seam_normals, 0, 1)
     tile_io.save_array(seam, seam_records)
-    # per scale and object, the cone its surface spans from the cloud's center, on the core's own vertices,
-    # and with input normals how many of those agree with them, of how many
-    cones, agreement = [], []
+    # per scale and object, the cone its surface spans from the cloud's center, on the core's own vertices
+    # (with the sum of its terms' sizes, its normals' z summed and their count, for the rule of nearly flat
+    # cones), and with input normals how many of those agree with them, of how many
+    cones, cone_sizes, up, counts, agreement = [], [], [], [], []
     objects = int(component.max()) + 1
     for layer in first_layers:
         own = core[layer.source[core] == 0]
         terms = np.einsum("ij,ij->i", layer.normal[own], points[own] - np.asarray(center))
         cones.append(np.bincount(component[own], weights=terms, minlength=objects).tolist())
+        cone_sizes.append(np.bincount(component[own], weights=np.abs(terms), minlength=objects).tolist())
+        up.append(np.bincount(component[own], weights=layer.normal[own, 2], minlength=objects).tolist())
+        counts.append(np.bincount(component[own], minlength=objects).tolist())
         if shape.normals is not None:
             agree = np.einsum("ij,ij->i", layer.normal[own], shape.normals[own]) > 0
             agreement.append([np.bincount(component[own], weights=agree, minlength=objects).astype(int).tolist(),
@@ -254,7 +258,8 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     part = tile_partition.part_path(folder, tile)
     tile_io.write_part(part, records, names, descriptions)
     sizes = np.bincount(component[core], minlength=objects).tolist()
-    return {"names": names, "descriptions": descriptions, "cones": cones, "agreement": agreement, "sizes": sizes,
+    return {"names": names, "descriptions": descriptions, "cones": cones, "cone_sizes": cone_sizes, "up": up,
+            "counts": counts, "agreement": agreement, "sizes": sizes,
             "size": os.path.getsize(part),
             "sha256": tile_io.file_digest(part), "seconds": time.monotonic() - started,
             "memory": _peak_memory(), "points": len(points), "core": len(core),

@@ -29,7 +29,8 @@ extract several scales). Orientation (the manual, "Orientation"): with
 `reference_normals`, every sheet faces the side that the majority of the
 reference normals at its vertices point to; without, a closed sheet points
 out of the volume it encloses and an open sheet away from the center of the
-surface's vertices. Parts that the front grew separately but that meet
+surface's vertices, or up (+z) where its cone from that center nearly
+cancels and it mostly faces along z (a terrain). Parts that the front grew separately but that meet
 along border edges are one sheet, oriented alike, so that the pieces of one
 scan agree. Without reference normals, open sheets that continue each other
 across a gap the front did not bridge (border vertices within 8 local

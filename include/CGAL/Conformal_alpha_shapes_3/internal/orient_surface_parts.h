@@ -324,6 +324,20 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
   return groups;
 }
 
+// A group of sheets whose cones' sum is less than this share of the sum of
+// their sizes faces neither towards the center nor away from it (a terrain,
+// whose roofs above the center and ground below it nearly cancel): the sign
+// of such a sum follows the cloud's last bits and its sampling density, and
+// a turn of the cloud about z could turn the sheet over. A cap of a convex
+// object has nearly all its cones of one sign (a share near 1), and a closed
+// sheet's area normals sum to zero, so neither falls under the rule below.
+constexpr double nearly_flat_cone_share = 0.25;
+// Such a group faces +z (up, as airborne and terrestrial scans are seen)
+// when its area normals summed reach this share of its area; the rule is
+// then one of the cloud's z axis: translations, scaling and turns about z
+// keep it, tilts need not.
+constexpr double mostly_along_z_share = 0.5;
+
 // Which parts to reverse so that each faces the way the orientation rule of
 // the manual says ("Orientation"):
 // - with reference normals (a scanner's), each part (cut at the folds, see
@@ -336,7 +350,9 @@ Sheet_groups join_open_sheets_across_gaps(const Advancing_front_soup& soup, cons
 //   object or a building's facades), together with the open sheets it
 //   continues across gaps (`groups`, see `join_open_sheets_across_gaps()`):
 //   the cones of a group are summed; an open sheet that nearly closes round
-//   its own center points out of it (`mark_sheets_round_own_centers()`).
+//   its own center points out of it (`mark_sheets_round_own_centers()`);
+//   a group whose cones nearly cancel (`nearly_flat_cone_share`) and that
+//   mostly faces along z (`mostly_along_z_share`) faces +z.
 // `point(s)` gives the position of soup vertex `s`, `reference(s)` its
 // reference normal.
 template <class Vector, class PointOf, class ReferenceOf>
@@ -350,6 +366,9 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
   };
   auto group_of_part = [&](std::size_t part) { return groups.group_of_sheet[sheets.sheet_of_part[part]]; };
   std::vector<double> vote(has_reference ? parts.size() : groups.number_of_groups, 0.0);
+  // without reference normals, by group: the sum of the cones' sizes, the
+  // area normals' z summed as the cones are, and the area
+  std::vector<double> cone_sizes(vote.size(), 0.0), up(vote.size(), 0.0), area(vote.size(), 0.0);
   // the center of the soup's vertices: the apex of the cones
   Vector center(0, 0, 0);
   for(std::size_t s = 0; s < soup.shape_vertex.size(); ++s)
@@ -374,9 +393,20 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
       }
     }
     else
-      vote[group_of_part(part)] += (reversed_in_group(part) ? -1.0 : 1.0)
-                                   * CGAL::to_double(area_normal * p0);  // six times the signed cone volume
+    {
+      const std::size_t g = group_of_part(part);
+      const double sign = reversed_in_group(part) ? -1.0 : 1.0;
+      const double cone = CGAL::to_double(area_normal * p0);  // six times the signed cone volume
+      vote[g] += sign * cone;
+      cone_sizes[g] += std::abs(cone);
+      up[g] += sign * CGAL::to_double(area_normal.z());
+      area[g] += std::sqrt(CGAL::to_double(area_normal.squared_length()));
+    }
   }
+  if(!has_reference)
+    for(std::size_t g = 0; g < vote.size(); ++g)
+      if(std::abs(vote[g]) < nearly_flat_cone_share * cone_sizes[g] && std::abs(up[g]) >= mostly_along_z_share * area[g])
+        vote[g] = up[g];
   if(!has_reference)
     for(std::size_t sheet = 0; sheet < sheets.size(); ++sheet)
       if(groups.round_own_center[sheet])  // alone in its group, see join_open_sheets_across_gaps()
