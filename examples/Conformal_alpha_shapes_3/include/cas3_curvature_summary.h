@@ -143,7 +143,8 @@ std::string summary_head(const std::string& input, const CGAL::Conformal_alpha_s
           + "; orientation: "
           + (analysis.has_reference_normals()
                ? "the majority of the input normals, per sheet where they are consistent; values per point there"
-               : "closed sheets outward, open sheets away from the center, with those they continue across gaps")
+               : "closed sheets outward, open sheets away from the center (up where that nearly cancels), with those they "
+                 "continue across gaps")
           + "\n";
   return head + "layer               a  own vertex  nearest  no value  radius(median)"
                 "    H:  5%          50%          95%      K:  5%          50%          95%\n";
