@@ -404,13 +404,15 @@ std::vector<char> parts_to_reverse(const Advancing_front_soup& soup, const Soup_
     }
   }
   if(!has_reference)
+  {
     for(std::size_t g = 0; g < vote.size(); ++g)
-      if(std::abs(vote[g]) < nearly_flat_cone_share * cone_sizes[g] && std::abs(up[g]) >= mostly_along_z_share * area[g])
+      if(std::abs(vote[g]) < nearly_flat_cone_share * cone_sizes[g]
+         && std::abs(up[g]) >= mostly_along_z_share * area[g])
         vote[g] = up[g];
-  if(!has_reference)
     for(std::size_t sheet = 0; sheet < sheets.size(); ++sheet)
       if(groups.round_own_center[sheet])  // alone in its group, see join_open_sheets_across_gaps()
         vote[groups.group_of_sheet[sheet]] = groups.own_cone_volume[sheet];
+  }
   std::vector<char> reverse(parts.size(), 0);
   for(std::size_t p = 0; p < parts.size(); ++p)
     reverse[p] = has_reference ? char(vote[p] < 0 ? 1 : 0)
