@@ -403,8 +403,8 @@ public:
   // `scales`: the number of scales the job's result() will have, or 0 when
   // only its closing values will be asked for (the shares of the progress)
   Job(const Doubles& points_array, const std::optional<Doubles>& normals_array, const Job_options& o, int threads,
-      std::optional<double> given_spacing, std::optional<double> given_noise, const Checkpoint& checkpoint,
-      std::size_t scales)
+      std::optional<double> given_spacing, std::optional<double> given_noise,
+      std::optional<double> given_noise_24, const Checkpoint& checkpoint, std::size_t scales)
     : m_options(o), m_threads(threads), m_checkpoint(checkpoint)
   {
     const std::vector<Point> points = to_triples<Point>(points_array, "points");
@@ -431,10 +431,12 @@ public:
                                        CAS3::parameters::denoising_neighbors(o.denoising_neighbors, with_noise))
           : std::make_unique<Analysis>(points.begin(), points.end(), with_noise);
       };
-      // the decisions of a larger run (the Python layer gives both or neither)
-      m_analysis = given_spacing ? analyze(CAS3::parameters::noise_estimate(
-                                     CAS3::Noise_estimate{*given_spacing, *given_noise, *given_noise}, np))
-                                 : analyze(np);
+      // the decisions of a larger run (the Python layer gives both or neither); without its 24-neighbor
+      // reading, the automatic denoising decision reads the noise alone
+      m_analysis = given_spacing
+        ? analyze(CAS3::parameters::noise_estimate(
+            CAS3::Noise_estimate{*given_spacing, *given_noise, given_noise_24.value_or(*given_noise)}, np))
+        : analyze(np);
       return 0;
     }, &checkpoint);
     m_seconds_per_cost = checkpoint.seconds_in_step() / m_shape_cost;
@@ -526,6 +528,8 @@ public:
     result["outlier"] = outlier;
     result["spacing"] = noise.spacing;
     result["noise"] = noise.noise;
+    result["noise_24"] = noise.noise_24;
+    result["calls_for_denoising"] = noise.calls_for_denoising();
     result["denoised"] = denoising.passes > 0;
     result["merged"] = analysis.number_of_merged_points();
     result["denoising_passes"] = denoising.passes;
@@ -569,12 +573,14 @@ py::dict multiscale_curvatures(const Doubles& points_array, const std::optional<
                                const std::vector<std::string>& rings, const std::string& estimator,
                                const std::string& denoise, const std::string& denoise_neighbors,
                                const std::string& extraction, int threads, py::object progress,
-                               std::optional<double> given_spacing, std::optional<double> given_noise)
+                               std::optional<double> given_spacing, std::optional<double> given_noise,
+                               std::optional<double> given_noise_24)
 {
   const Job_options o =
     read_job_options(scales, radii, rings, estimator, denoise, denoise_neighbors, extraction);
   const Checkpoint checkpoint(std::move(progress));
-  Job job(points_array, normals_array, o, threads, given_spacing, given_noise, checkpoint, o.scales.size());
+  Job job(points_array, normals_array, o, threads, given_spacing, given_noise, given_noise_24, checkpoint,
+          o.scales.size());
   return job.result(o.scales, checkpoint);
 }
 
@@ -1597,7 +1603,7 @@ PYBIND11_MODULE(_native, m)
   m.def("multiscale_curvatures", &multiscale_curvatures, py::arg("points"), py::arg("normals"),
         py::arg("scales"), py::arg("radii"), py::arg("rings"), py::arg("estimator"), py::arg("denoise"),
         py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"), py::arg("progress"),
-        py::arg("spacing"), py::arg("noise"));
+        py::arg("spacing"), py::arg("noise"), py::arg("noise_24"));
   // a job of the given options but its scales, which `result` takes
   py::class_<Job>(m, "Job")
     .def(py::init([](const Doubles& points, const std::optional<Doubles>& normals,
@@ -1605,15 +1611,15 @@ PYBIND11_MODULE(_native, m)
                      const std::string& estimator, const std::string& denoise,
                      const std::string& denoise_neighbors, const std::string& extraction, int threads,
                      py::object progress, std::optional<double> spacing, std::optional<double> noise,
-                     std::size_t scales) {
+                     std::optional<double> noise_24, std::size_t scales) {
            const Job_options o =
              read_job_options({"auto"}, radii, rings, estimator, denoise, denoise_neighbors, extraction);
-           return std::make_unique<Job>(points, normals, o, threads, spacing, noise, Checkpoint(std::move(progress)),
-                                        scales);
+           return std::make_unique<Job>(points, normals, o, threads, spacing, noise, noise_24,
+                                        Checkpoint(std::move(progress)), scales);
          }),
          py::arg("points"), py::arg("normals"), py::arg("radii"), py::arg("rings"), py::arg("estimator"),
          py::arg("denoise"), py::arg("denoise_neighbors"), py::arg("extraction"), py::arg("threads"),
-         py::arg("progress"), py::arg("spacing"), py::arg("noise"), py::arg("scales") = 1)
+         py::arg("progress"), py::arg("spacing"), py::arg("noise"), py::arg("noise_24"), py::arg("scales") = 1)
     .def("closing_values", &Job::closing_values)
     .def("result", [](Job& job, const std::vector<std::string>& scales, py::object progress) {
            return job.result(read_job_options(scales, {"auto"}, {}, "quadric", "auto", "", "front").scales,

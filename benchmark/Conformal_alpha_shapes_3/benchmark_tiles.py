@@ -13,7 +13,8 @@ One run is ``multiscale_curvatures`` in a process of its own with TBB on
 every core (the program's values to the last bit); the tiled run is
 ``python3 -m conformal_alpha_shapes.tiles`` with an embedded LocalCluster.
 With --no-one-run only the tiled run (clouds one process cannot hold);
-with --input FILE a scan instead of the scene (with its normals, if any).
+with --input FILE a scan instead of the scene (with its normals, if any);
+--halo SPACINGS is the tiled run's (default: its own).
 With --a-spread, one run's own automatic scale on the cloud translated by
 1e-10, 1e-7 and 1e-4 of its bounding box's diagonal (far below its
 spacing): a translation changes no distance beyond rounding, but it changes
@@ -199,6 +200,7 @@ def main():
                         help="a cloud the program reads (.xyz, .ply, ...) instead of the scene, with its normals")
     parser.add_argument("--folder", default=None, help="where the cloud and the outputs go (default: a temporary one)")
     parser.add_argument("--no-one-run", action="store_true")
+    parser.add_argument("--halo", help="the tiled run's halo in spacings (default: its own)")
     parser.add_argument("--csv", help="where to write the result as quantity,value rows")
     parser.add_argument("--las", action="store_true",
                         help="also tiled runs on the points as LAS and as PLY: drivers' memory, same answer")
@@ -226,7 +228,7 @@ def main():
     start = time.perf_counter()
     subprocess.run([sys.executable, "-m", "conformal_alpha_shapes.tiles", cloud, "--output",
                     os.path.join(folder, "tiled"), "--tile-points", str(args.tile_points), "--workers",
-                    str(args.workers), "--merge"], check=True)
+                    str(args.workers), "--merge"] + (["--halo", args.halo] if args.halo else []), check=True)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     with open(os.path.join(folder, "tiled", "summary.json")) as f:
         summary = json.load(f)

@@ -313,7 +313,8 @@ class Result:
         outlier: (N,) bool, the isolated far outliers, left off every surface
             (their values are NaN with source 2).
         spacing: the sample spacing, in units of the points ("4s" is four of them).
-        noise: the estimated noise, in spacings.
+        noise: the estimated noise, in spacings (a ``NoiseEstimate``: a
+            float with ``spacing``, ``noise_24`` and ``calls_for_denoising``).
         denoised: whether the points were smoothed before the shape was built.
         merged: how many points were equal to an earlier point: merged into
             it before any estimate, each copy has its point's values.
@@ -330,7 +331,7 @@ class Result:
         self.layers = tuple(self._layers)
         self.outlier = native["outlier"]
         self.spacing = native["spacing"]
-        self.noise = native["noise"]
+        self.noise = native["noise"] if "noise_24" not in native else NoiseEstimate(native)
         self.denoised = native["denoised"]
         self.merged = native.get("merged")
         for layer in self._layers.values():
@@ -563,7 +564,8 @@ def _job_arguments(points, normals, radii, rings, estimator, denoise, denoise_ne
             _choice(estimator, "estimator"), _choice(denoise, "denoise"),
             "" if denoise_neighbors is None else str(int(denoise_neighbors)),
             _choice(extraction, "extraction"), _threads(threads), progress,
-            None if spacing is None else float(spacing), None if noise is None else float(noise))
+            None if spacing is None else float(spacing), None if noise is None else float(noise),
+            float(noise.noise_24) if isinstance(noise, NoiseEstimate) else None)
 
 
 def _job(points, normals=None, *, radii=("auto",), rings=(), estimator="quadric", denoise="auto",
@@ -628,7 +630,11 @@ def multiscale_curvatures(points, normals=None, *, scales=("auto",), radii=("aut
             on these points: for radii in spacings ("4s"), the "auto" radius,
             the noise level of the fits and the "auto" denoising decision.
             Given a run's own ``r.spacing`` and ``r.noise``, a run on the same
-            points gives the same values to the last bit.
+            points gives the same values to the last bit. The "auto"
+            denoising decision also reads the noise with 24 neighbors, which
+            ``r.noise`` and ``estimate_noise()`` carry (a ``NoiseEstimate``);
+            given a plain float, it reads that noise alone (smoothing above
+            0.02 spacings), so pass ``denoise`` too.
 
     Returns:
         A ``Result``: ``r.layers`` the layer names, ``r[name]`` a ``Layer``.

@@ -65,6 +65,24 @@ def test_spacing_and_noise_of_a_larger_run():
     assert not cas.multiscale_curvatures(points, radii=("4s",), spacing=own.spacing, noise=0.0).denoised
 
 
+def test_a_larger_runs_noise_carries_its_denoising_decision():
+    """An airborne scan whose noise (0.065 spacings) reads half as large
+    again with 24 neighbors (detail the sampling does not resolve): not
+    smoothed. Its own ``r.noise`` given back carries that reading, so the
+    same decision and the same values to the bit (with the noise alone the
+    run was smoothed and its scale 20% off); a plain float reads the noise
+    alone, as documented."""
+    points, _ = cas.read_point_cloud(scan_path("b9_training.ply"))
+    own = cas.multiscale_curvatures(points, radii=("4s",))
+    assert not own.denoised and own.noise > 0.02 and own.noise.noise_24 > 1.3 * own.noise
+    assert not own.noise.calls_for_denoising
+    given = cas.multiscale_curvatures(points, radii=("4s",), spacing=own.spacing, noise=own.noise)
+    assert not given.denoised and given["r4s"].a == own["r4s"].a
+    for key in ("H", "K", "normal", "radius", "source"):
+        assert own["r4s"][key].tobytes() == given["r4s"][key].tobytes(), key
+    assert cas.multiscale_curvatures(points, radii=("4s",), spacing=own.spacing, noise=float(own.noise)).denoised
+
+
 def test_front_closing_values_give_the_automatic_scale():
     """The mean of their ranks 0.99 n to 0.999 n is the automatic scale (tiled runs pool them over tiles)."""
     points, _ = fibonacci_sphere(3000)
