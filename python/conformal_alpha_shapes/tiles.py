@@ -42,6 +42,10 @@ AUTOMATIC_RADIUS_SPACINGS = 22.6
 FRONT_REACH_SPACINGS = 8.0
 # The share of the front's vertices the automatic scale covers (suggest_scale's default).
 COVERAGE = 0.99
+# Above this ratio of the last to the first value of the automatic scale's
+# window, a few far-reaching closing values decide the scale and a tile's
+# halo may not hold them: the summary says so (the manual, "Tiled Processing").
+WIDE_TAIL = 2.5
 # The share of the workers' memory that the held shapes may take.
 HELD_SHAPES_SHARE = 0.5
 # estimate_noise()'s sample of the points (noise_sample_size in estimate_noise.h) and the neighbors of its fits
@@ -147,6 +151,23 @@ def _kth_smallest(arrays, k):
     return _key_value(lo)
 
 
+def _window(n, coverage):
+    """The ranks of ``scale_of_closing_values()``'s window of ``n`` values: first, last (excluded)."""
+    first = min(n - 1, int(coverage * n))
+    return first, max(first + 1, min(n, int((coverage + 0.9 * (1 - coverage)) * n)))
+
+
+def _tail_spread(paths, coverage):
+    """The last value of the window over its first (None without values or when the first is 0)."""
+    arrays = _sorted_values(paths)
+    n = sum(len(a) for a in arrays)
+    if n == 0:
+        return None
+    first, last = _window(n, coverage)
+    start = _kth_smallest(arrays, first)
+    return _kth_smallest(arrays, last - 1) / start if start > 0 else None
+
+
 def _scale_of_closing_values(paths, coverage):
     """``scale_of_closing_values()`` of the C++ library over the values of
     sorted ``.npy`` files pooled, to the bit: the mean, summed in increasing
@@ -157,8 +178,7 @@ def _scale_of_closing_values(paths, coverage):
     n = sum(len(a) for a in arrays)
     if n == 0:
         return float("inf")
-    first = min(n - 1, int(coverage * n))
-    last = max(first + 1, min(n, int((coverage + 0.9 * (1 - coverage)) * n)))
+    first, last = _window(n, coverage)
     start = _kth_smallest(arrays, first)
     below = sum(int(np.searchsorted(a, start, side="left")) for a in arrays)
     tail = np.sort(np.concatenate([a[int(np.searchsorted(a, start, side="left")):] for a in arrays]))
@@ -248,7 +268,10 @@ def process_tiles(input, output, *, tile_points=1_000_000, workers=None, schedul
 
     Returns:
         The summary (a dict): tiles, points, spacing, noise, denoised, a per
-        scale, halo, the seams' agreement, the worst tile, workers' peak memory.
+        scale, a_tail_spread (the last value of the automatic scale's window
+        of closing values over its first; the text summary warns above
+        2.5), halo, the seams' agreement, the worst tile, workers' peak
+        memory.
 
     Raises:
         tile_io.InputError: bad input (file and line), before any file is written.
@@ -453,10 +476,10 @@ def _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet):
     _run_tasks(client, tile_tasks.tile_closing,
                [(t, (output, t, cloud.has_normals, job, shapes.get(t))) for t in range(tiles)],
                "closing values", cloud.count, quiet, done)
-    a = _scale_of_closing_values([os.path.join(output, "tiles", f"closing_{t:05d}.npy") for t in range(tiles)],
-                                 COVERAGE)
-    manifest.update(a=a, closing_stats={str(t): {"seconds": v["seconds"], "memory": v["memory"]}
-                                        for t, v in stats.items()})
+    paths = [os.path.join(output, "tiles", f"closing_{t:05d}.npy") for t in range(tiles)]
+    a = _scale_of_closing_values(paths, COVERAGE)
+    manifest.update(a=a, a_tail_spread=_tail_spread(paths, COVERAGE),
+                    closing_stats={str(t): {"seconds": v["seconds"], "memory": v["memory"]} for t, v in stats.items()})
     save()
     return a
 
@@ -563,7 +586,8 @@ def _summary(manifest, votes, flips, reused, cloud, first_names):
                   if x is not None and n >= tile_orientation.MINIMUM_SEAM_POINTS]
     return {"tiles": manifest["tiles"], "points": cloud.count, "spacing": manifest["spacing"],
             "noise": manifest["noise"], "denoised": manifest["denoise"] == "on",
-            "a": parts["0"]["a"], "halo_spacings": manifest["halo_spacings"],
+            "a": parts["0"]["a"], "a_tail_spread": manifest.get("a_tail_spread"),
+            "halo_spacings": manifest["halo_spacings"],
             "layers": parts["0"]["names"], "seams": seam_list,
             "worst_seam_agreement": min(agreements) if agreements else None,
             "worst_tile": {"tile": int(worst), "seconds": parts[worst]["seconds"],
@@ -602,6 +626,10 @@ def format_summary(summary):
              f"noise: {summary['noise']:.3g} x spacing (spacing {summary['spacing']:.4g}); "
              f"{'smoothed' if summary['denoised'] else 'no smoothing'}",
              "scales: " + ", ".join(f"a = {a:.4g}" for a in summary["a"]),
+             *([f"automatic scale: the closing values of its window differ by a factor of "
+                f"{summary['a_tail_spread']:.3g} (above {WIDE_TAIL}): a few far-reaching values decide it, and a "
+                "tile's halo may not hold them, so it may not be one run's (--alpha gives a scale, a wider --halo "
+                "may help)"] if (summary.get("a_tail_spread") or 0) > WIDE_TAIL else []),
              _SHAPES_TEXT[summary["shapes"]],
              *([f"input normals: {summary['objects_without_normals']} object(s) of the tiles point about as often "
                 "to one side as to the other (unoriented normals?); oriented as without normals"]

@@ -159,6 +159,22 @@ def test_a_scan_in_tiles_equals_one_run(client, tmp_path):
     assert_same_answer(points, cas.multiscale_curvatures(points, normals), summary, tmp_path / "out", 0.002)
 
 
+def test_a_widely_spread_automatic_scale_is_named(client, tmp_path, scene_run):
+    """b9_training.ply (an airborne town block) in 4 tiles: a few border
+    vertices close through facets longer than the halo, the automatic
+    scale's window of closing values spans a factor of 2.7 (the scene's:
+    1.2), and the summary says that the scale may not be one run's."""
+    points, _ = cas.read_point_cloud(scan_path("b9_training.ply"))
+    np.save(tmp_path / "b9.npy", points)
+    summary = tiles.process_tiles(tmp_path / "b9.npy", tmp_path / "out", tile_points=6_000, client=client,
+                                  quiet=True)
+    assert summary["tiles"] == 4 and summary["a_tail_spread"] > tiles.WIDE_TAIL, summary["a_tail_spread"]
+    assert "a few far-reaching values decide it" in tiles.format_summary(summary)
+    scene_summary = scene_run[2]
+    assert scene_summary["a_tail_spread"] < 2, scene_summary["a_tail_spread"]
+    assert "far-reaching" not in tiles.format_summary(scene_summary)
+
+
 def test_the_merged_file_is_the_programs_format(scene_run):
     _, _, summary, one, folder = scene_run
     with open(folder / "out" / "curvatures.ply", "rb") as f:
