@@ -157,9 +157,9 @@ def _window(n, coverage):
     return first, max(first + 1, min(n, int((coverage + 0.9 * (1 - coverage)) * n)))
 
 
-def _tail_spread(paths, coverage):
-    """The last value of the window over its first (None without values or when the first is 0)."""
-    arrays = _sorted_values(paths)
+def _tail_spread(arrays, coverage):
+    """The last value of the window of the sorted ``arrays`` pooled over its
+    first (None without values or when the first is 0)."""
     n = sum(len(a) for a in arrays)
     if n == 0:
         return None
@@ -168,13 +168,12 @@ def _tail_spread(paths, coverage):
     return _kth_smallest(arrays, last - 1) / start if start > 0 else None
 
 
-def _scale_of_closing_values(paths, coverage):
+def _scale_of_closing_values(arrays, coverage):
     """``scale_of_closing_values()`` of the C++ library over the values of
-    sorted ``.npy`` files pooled, to the bit: the mean, summed in increasing
+    the sorted ``arrays`` pooled, to the bit: the mean, summed in increasing
     order, of the pooled values of ranks ``coverage n`` up to, not including,
     ``(coverage + 0.9 (1 - coverage)) n``; only the values from the first of
     them up are read."""
-    arrays = _sorted_values(paths)
     n = sum(len(a) for a in arrays)
     if n == 0:
         return float("inf")
@@ -476,9 +475,9 @@ def _automatic_scale(client, cloud, output, manifest, save, job, shapes, quiet):
     _run_tasks(client, tile_tasks.tile_closing,
                [(t, (output, t, cloud.has_normals, job, shapes.get(t))) for t in range(tiles)],
                "closing values", cloud.count, quiet, done)
-    paths = [os.path.join(output, "tiles", f"closing_{t:05d}.npy") for t in range(tiles)]
-    a = _scale_of_closing_values(paths, COVERAGE)
-    manifest.update(a=a, a_tail_spread=_tail_spread(paths, COVERAGE),
+    closing = _sorted_values([os.path.join(output, "tiles", f"closing_{t:05d}.npy") for t in range(tiles)])
+    a = _scale_of_closing_values(closing, COVERAGE)
+    manifest.update(a=a, a_tail_spread=_tail_spread(closing, COVERAGE),
                     closing_stats={str(t): {"seconds": v["seconds"], "memory": v["memory"]} for t, v in stats.items()})
     save()
     return a
