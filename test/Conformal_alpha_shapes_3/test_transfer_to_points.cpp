@@ -260,6 +260,78 @@ BOOST_AUTO_TEST_CASE(a_vertex_without_a_value_takes_its_neighbors_mean)
 }
 
 
+// A point whose vertex stands for several surface vertices (a pinched
+// vertex) takes their mean weighted by their facets' area, whichever of them
+// the surface lists first: a sphere's surface and a copy of it scaled by 2
+// (four times the area) as one mesh, each vertex of the copy standing for the
+// same input point, with values of another normal and curvature.
+BOOST_AUTO_TEST_CASE(a_pinched_vertex_takes_its_surface_vertices_mean_in_any_order)
+{
+  typedef Surface_mesh::Vertex_index Vertex;
+  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(2000, 1, 1, 1);
+  const Cas cas(pts.begin(), pts.end());
+  Surface_mesh sphere;
+  auto sphere_index = sphere.add_property_map<Vertex, std::size_t>("v:input_index").first;
+  CAS3::extract_surface(cas, CAS3::suggest_scale(cas), sphere,
+                        CAS3::parameters::vertex_input_index_map(sphere_index));
+  const std::vector<CAS3::Vertex_curvature<K> > values = made_up_values(sphere);
+  // the copy's values: the normal and directions turned by 60 degrees about z, k1 = k2 = 3
+  const double c60 = 0.5, s60 = std::sqrt(3.) / 2;
+  auto turned = [&](const Vector& x) { return Vector(c60 * x.x() - s60 * x.y(), s60 * x.x() + c60 * x.y(), x.z()); };
+  auto copy_value = [&](CAS3::Vertex_curvature<K> c) {
+    c.normal = turned(c.normal);
+    c.principal = CAS3::Principal_curvatures_and_directions<K>{3, 3, turned(c.principal.max_direction),
+                                                               turned(c.principal.min_direction)};
+    return c;
+  };
+  auto transfer = [&](bool copy_first) {
+    Surface_mesh mesh;
+    auto input_index = mesh.add_property_map<Vertex, std::size_t>("v:input_index").first;
+    std::vector<std::vector<CAS3::Vertex_curvature<K> > > layers(1);
+    for(int part = 0; part < 2; ++part)
+    {
+      const bool copy = (part == 0) == copy_first;
+      std::vector<Vertex> to(sphere.number_of_vertices());
+      for(Vertex v : sphere.vertices())
+      {
+        to[std::size_t(v)] = mesh.add_vertex(CGAL::ORIGIN + (copy ? 2. : 1.) * (sphere.point(v) - CGAL::ORIGIN));
+        input_index[to[std::size_t(v)]] = sphere_index[v];
+        layers[0].push_back(copy ? copy_value(values[std::size_t(v)]) : values[std::size_t(v)]);
+      }
+      for(Surface_mesh::Face_index f : sphere.faces())
+      {
+        std::vector<Vertex> corners;
+        for(Vertex v : CGAL::vertices_around_face(sphere.halfedge(f), sphere))
+          corners.push_back(to[std::size_t(v)]);
+        mesh.add_face(corners);
+      }
+    }
+    std::vector<CAS3::Point_curvature<K> > out(pts.size());
+    CAS3::transfer_to_points(cas, mesh, layers, [&](std::size_t) { return CGAL::make_property_map(out); },
+                             CAS3::parameters::vertex_input_index_map(input_index));
+    return out;
+  };
+  const std::vector<CAS3::Point_curvature<K> > sphere_first = transfer(false), copy_first = transfer(true);
+  std::size_t checked = 0;
+  for(Vertex v : sphere.vertices())
+  {
+    const CAS3::Vertex_curvature<K>& a = values[std::size_t(v)];
+    const CAS3::Vertex_curvature<K> b = copy_value(a);
+    const Vector n = a.normal + 4 * b.normal;
+    const double H = (a.mean_curvature() + 4 * b.mean_curvature()) / 5;
+    for(const std::vector<CAS3::Point_curvature<K> >* out : {&sphere_first, &copy_first})
+    {
+      const CAS3::Point_curvature<K>& c = (*out)[sphere_index[v]];
+      BOOST_TEST_INFO("vertex " << std::size_t(v) << ", H " << c.mean_curvature << " against " << H);
+      BOOST_TEST(c.source == CAS3::SURFACE_VERTEX);
+      BOOST_TEST(std::abs(c.mean_curvature - H) < 1e-9);
+      BOOST_TEST(std::sqrt((c.normal - n / std::sqrt(n.squared_length())).squared_length()) < 1e-9);
+    }
+    ++checked;
+  }
+  BOOST_TEST(checked > 1000u);
+}
+
 // A point off the surface takes the values interpolated at its nearest
 // surface point, not those of one corner of the facet there: made-up values,
 // distinct at every vertex, on a sphere whose cap is cut off; the points of

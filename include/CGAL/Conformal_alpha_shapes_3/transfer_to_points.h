@@ -86,8 +86,10 @@ of the corner's neighbors with values; where the normals averaged nearly
 cancel, their weighted sum shorter than one half, the values of the one of
 largest weight), unless it is farther than `far_from_surface()` local
 spacings (`NO_VALUE`, all NaN; so is every point when the surface is
-empty). Where several surface vertices stand for one vertex of the shape
-(a pinched vertex), the first with a defined value gives it. With
+empty). Where several surface vertices with defined values stand for one vertex
+of the shape (a pinched vertex, where sheets meet), the point takes their
+mean weighted by a third of each one's facets' area, as above where their
+normals nearly cancel, so that no order of the surface's vertices decides. With
 `reference_normals`, a point whose reference normal points to the other
 side of the surface gets the values seen from that side: normal and mean
 and principal curvatures negated, principal directions swapped.

@@ -61,19 +61,30 @@ Shape_vertex_table<typename Cas::Point> shape_vertex_table(const Cas& cas, const
   return table;
 }
 
-// For every vertex of the shape (by vertex index), the surface vertex whose
-// value in `values` it takes: its own first; at a pinch, the first one
-// whose value is defined; none (-1) when none is.
-template <class Point, class Value>
-std::vector<std::size_t> own_vertices(const Shape_vertex_table<Point>& table, const std::vector<Value>& values)
+// For every vertex of the shape (by vertex index), the surface vertices
+// whose values in `values` are defined (several where the vertex is
+// pinched): those of shape vertex `v` are `vertices[first[v]]` up to
+// `vertices[first[v + 1]]`, in the order of the surface's vertices.
+struct Own_vertices
 {
-  std::vector<std::size_t> own(table.number_of_shape_vertices(), std::size_t(-1));
+  std::vector<std::size_t> first, vertices;
+};
+
+template <class Point, class Value>
+Own_vertices own_vertices(const Shape_vertex_table<Point>& table, const std::vector<Value>& values)
+{
+  Own_vertices own;
+  own.first.assign(table.number_of_shape_vertices() + 1, 0);
   for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
-  {
-    std::size_t& o = own[v.second];
-    if(o == std::size_t(-1) && values[v.first].is_defined())
-      o = v.first;
-  }
+    if(values[v.first].is_defined())
+      ++own.first[v.second + 1];
+  for(std::size_t v = 0; v + 1 < own.first.size(); ++v)
+    own.first[v + 1] += own.first[v];
+  own.vertices.resize(own.first.back());
+  std::vector<std::size_t> next(own.first.begin(), own.first.end() - 1);
+  for(const std::pair<std::size_t, std::size_t>& v : table.index_and_shape_vertex)
+    if(values[v.first].is_defined())
+      own.vertices[next[v.second]++] = v.first;
   return own;
 }
 
@@ -96,9 +107,9 @@ std::vector<bool> needs_foot(const Shape_vertex_table<Point>& table, const std::
   std::vector<bool> needs(table.number_of_shape_vertices(), false);
   for(const std::vector<Value>& values : layers)
   {
-    const std::vector<std::size_t> own = own_vertices(table, values);
-    for(std::size_t v = 0; v < own.size(); ++v)
-      if(own[v] == std::size_t(-1))
+    const Own_vertices own = own_vertices(table, values);
+    for(std::size_t v = 0; v < needs.size(); ++v)
+      if(own.first[v] == own.first[v + 1])
         needs[v] = true;
   }
   return needs;
