@@ -391,6 +391,50 @@ struct Step_costs
   static constexpr double seconds_per_point = 1.5e-5;
 };
 
+// (vertices, faces, point_index) of a surface mesh with "v:input_index"
+py::tuple mesh_arrays(const Surface& mesh)
+{
+  const auto index = mesh.property_map<Surface::Vertex_index, std::size_t>("v:input_index").first;
+  py::array_t<double> vertices = new_triples(mesh.number_of_vertices());
+  py::array_t<std::int64_t> point_index = new_array<std::int64_t>(mesh.number_of_vertices());
+  std::vector<std::int64_t> number(mesh.num_vertices(), -1);
+  std::size_t next = 0;
+  for(Surface::Vertex_index v : mesh.vertices())
+  {
+    put_triple(vertices.mutable_data(), next, mesh.point(v) - CGAL::ORIGIN);
+    point_index.mutable_data()[next] = std::int64_t(index[v]);
+    number[v] = std::int64_t(next++);
+  }
+  py::array_t<std::int64_t> faces(std::vector<py::ssize_t>{py::ssize_t(mesh.number_of_faces()), 3});
+  std::size_t f_next = 0;
+  for(Surface::Face_index f : mesh.faces())
+  {
+    int j = 0;
+    for(Surface::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      faces.mutable_data()[3 * f_next + std::size_t(j++)] = number[v];
+    ++f_next;
+  }
+  return py::make_tuple(vertices, faces, point_index);
+}
+
+// The arrays of mesh_arrays() with "orientation_group": each face's (see
+// the named parameter face_orientation_group_map of extract_surface()).
+py::dict oriented_surface_arrays(const Surface& mesh)
+{
+  const py::tuple arrays = mesh_arrays(mesh);
+  const auto group = mesh.property_map<Surface::Face_index, std::size_t>("f:orientation_group").first;
+  py::array_t<std::int64_t> groups = new_array<std::int64_t>(mesh.number_of_faces());
+  std::size_t next = 0;
+  for(Surface::Face_index f : mesh.faces())
+    groups.mutable_data()[next++] = group[f] == std::size_t(-1) ? -1 : std::int64_t(group[f]);
+  py::dict surface;
+  surface["vertices"] = arrays[0];
+  surface["faces"] = arrays[1];
+  surface["point_index"] = arrays[2];
+  surface["orientation_group"] = groups;
+  return surface;
+}
+
 // The program's job (conformal_curvature.cpp) without its files, split at
 // its shape: the analysis is built once (with the decisions of a larger run
 // when given), then gives its closing values or, per scale, its surface and
@@ -460,8 +504,11 @@ public:
 
   // The layers of `scales` and the run's decisions, as `multiscale_curvatures`
   // returns them: the job's last call, as in the program the shape is freed
-  // before the last scale's fits, then the rest of the analysis.
-  py::dict result(const std::vector<CAS3::Scale>& scales, const Checkpoint& checkpoint)
+  // before the last scale's fits, then the rest of the analysis; with
+  // `with_surfaces`, each scale's surface (oriented_surface_arrays(): a
+  // tile's driver orients its pieces as one run's vote would).
+  py::dict result(const std::vector<CAS3::Scale>& scales, const Checkpoint& checkpoint,
+                  bool with_surfaces = false)
   {
     this->analysis();  // raises when the shape was released
     Analysis& analysis = *m_analysis;
@@ -484,6 +531,7 @@ public:
             " points (at least 25 are needed, not all coincident or on a line); give the radii as lengths "
             "(radii=[0.1]) or rings (rings=[1]), or spacing= and noise=");
     py::list layers;
+    py::list surfaces;
     without_gil([&] {
       for(const CAS3::Scale& scale : scales)
       {
@@ -493,6 +541,11 @@ public:
         Surface surface;
         const CAS3::Surface_report report = analysis.surface(a, surface);
         cas3::return_freed_memory();  // as the program does: the front's copy was freed mid-heap
+        if(with_surfaces)
+        {
+          py::gil_scoped_acquire gil;
+          surfaces.append(oriented_surface_arrays(surface));
+        }
         step("curvature at scale " + cas3::scale_text(scale), Step_costs::curvature(o.neighborhoods));
         // each layer becomes its arrays as soon as it is made: the point
         // layers' values are never all held at once
@@ -525,6 +578,8 @@ public:
     const CAS3::Denoising_plan denoising = analysis.denoising();
     py::dict result;
     result["layers"] = layers;
+    if(with_surfaces)
+      result["surfaces"] = surfaces;
     result["outlier"] = outlier;
     result["spacing"] = noise.spacing;
     result["noise"] = noise.noise;
@@ -1228,32 +1283,6 @@ public:
     return mesh_arrays(mesh);
   }
 
-  // (vertices, faces, point_index) of a surface mesh with "v:input_index"
-  static py::tuple mesh_arrays(const Surface& mesh)
-  {
-    const auto index = mesh.property_map<Surface::Vertex_index, std::size_t>("v:input_index").first;
-    py::array_t<double> vertices = new_triples(mesh.number_of_vertices());
-    py::array_t<std::int64_t> point_index = new_array<std::int64_t>(mesh.number_of_vertices());
-    std::vector<std::int64_t> number(mesh.num_vertices(), -1);
-    std::size_t next = 0;
-    for(Surface::Vertex_index v : mesh.vertices())
-    {
-      put_triple(vertices.mutable_data(), next, mesh.point(v) - CGAL::ORIGIN);
-      point_index.mutable_data()[next] = std::int64_t(index[v]);
-      number[v] = std::int64_t(next++);
-    }
-    py::array_t<std::int64_t> faces(std::vector<py::ssize_t>{py::ssize_t(mesh.number_of_faces()), 3});
-    std::size_t f_next = 0;
-    for(Surface::Face_index f : mesh.faces())
-    {
-      int j = 0;
-      for(Surface::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-        faces.mutable_data()[3 * f_next + std::size_t(j++)] = number[v];
-      ++f_next;
-    }
-    return py::make_tuple(vertices, faces, point_index);
-  }
-
 private:
   std::unique_ptr<Shape> m_shape;
 };
@@ -1623,7 +1652,7 @@ PYBIND11_MODULE(_native, m)
     .def("closing_values", &Job::closing_values)
     .def("result", [](Job& job, const std::vector<std::string>& scales, py::object progress) {
            return job.result(read_job_options(scales, {"auto"}, {}, "quadric", "auto", "", "front").scales,
-                             Checkpoint(std::move(progress)));
+                             Checkpoint(std::move(progress)), true);
          })
     .def("release", &Job::release);
   m.def("write_point_cloud", &write_point_cloud);

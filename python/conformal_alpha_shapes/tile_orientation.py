@@ -17,8 +17,8 @@ MINIMUM_SEAM_POINTS = 20
 FOLLOWED_SHARE = 0.75
 # One run's rule for a group of open sheets whose cones nearly cancel (a
 # terrain): below this share of the sum of its terms' sizes the cone does not
-# decide, and the group faces +z if its normals summed reach
-# MOSTLY_ALONG_Z_SHARE of their count (C++: nearly_flat_cone_share and
+# decide, and the group faces +z if its area normals summed reach
+# MOSTLY_ALONG_Z_SHARE of its area (C++: nearly_flat_cone_share and
 # mostly_along_z_share in internal/orient_surface_parts.h).
 NEARLY_FLAT_CONE_SHARE = 0.25
 MOSTLY_ALONG_Z_SHARE = 0.5
@@ -35,13 +35,13 @@ def tile_votes(folder, tile, names, first_names, states):
         mine = seam[seam["owner"] == owner]
         part = tile_io.read_part(tile_partition.part_path(folder, owner), names)
         rows = np.searchsorted(part["input_index"].astype(np.int64), mine["index"])
-        theirs_component = np.load(tile_partition.tile_path(folder, owner, "component.npy"))[rows]
+        theirs_objects = np.load(tile_partition.tile_path(folder, owner, "objects.npy"))[:, rows]
         for s, name in enumerate(first_names):
             theirs = np.column_stack([part[f"n{axis}_{name}"][rows] for axis in "xyz"]).astype(np.float64)
-            sign = np.where(np.isin(theirs_component, states[owner][s]), -1.0, 1.0)
+            sign = np.where(np.isin(theirs_objects[s], states[owner][s]), -1.0, 1.0)
             dot = sign * np.einsum("ij,ij->i", theirs, mine["normal"][:, s, :].astype(np.float64))
             valid = np.isfinite(dot) & (dot != 0)
-            pairs = np.column_stack([mine["component"][valid], theirs_component[valid]])
+            pairs = np.column_stack([mine["object"][valid, s], theirs_objects[s][valid]])
             for (a, b), count in zip(*np.unique(pairs, axis=0, return_counts=True)):
                 both = valid.copy()
                 both[valid] = (pairs[:, 0] == a) & (pairs[:, 1] == b)
@@ -66,9 +66,9 @@ def tile_flip(folder, tile, names, scale_layers, turns):
     path = tile_partition.part_path(folder, tile)
     header = tile_io.part_header(path)
     records = np.array(tile_io.read_part(path, names))
-    component = np.load(tile_partition.tile_path(folder, tile, "component.npy"))
+    of_points = np.load(tile_partition.tile_path(folder, tile, "objects.npy"))
     for s, objects in turns.items():
-        rows = np.flatnonzero(np.isin(component, objects))
+        rows = np.flatnonzero(np.isin(of_points[s], objects))
         for name in scale_layers[s]:
             _flip_layer(records, name, rows)
 
@@ -94,36 +94,55 @@ def not_following_normals(parts, s, small=False):
     return free
 
 
-def _group_vote(parts, s, group, relative):
-    """The side that a group of objects faces at scale ``s``, by its sign: the
-    cone it spans from the cloud's center, or where that nearly cancels and
-    the group mostly faces along z, its normals' z summed (one run's rule)."""
+def _surface_center(parts, s):
+    """The center of the surface's vertices at scale ``s`` (from the run's
+    center, as the tiles' votes are), the apex of one run's cones."""
+    total = sum(np.asarray(part["votes"][s]["vertex_sum"]) for part in parts)
+    count = sum(part["votes"][s]["vertex_count"] for part in parts)
+    return total / count if count else np.zeros(3)
+
+
+def _group_vote(parts, s, group, relative, center):
+    """The side that a group of objects faces at scale ``s``, by its sign, as
+    one run's vote over their faces: the cone it spans from the surface's
+    ``center``, or where that nearly cancels and the group mostly faces
+    along z, its area normals' z summed. The cones' sizes are taken from
+    the run's center rather than the surface's (a tile does not know the
+    latter when it sums them), which can move the rule of nearly flat cones
+    only for a group at its threshold."""
     def summed(key, signed):
-        return sum(-parts[t][key][s][c] if signed and relative[(t, c)] else parts[t][key][s][c] for t, c in group
-                   if key in parts[t])
-    cone, up = summed("cones", True), summed("up", True)
-    if abs(cone) < NEARLY_FLAT_CONE_SHARE * summed("cone_sizes", False) \
-            and abs(up) >= MOSTLY_ALONG_Z_SHARE * summed("counts", False):
+        return sum(-parts[t]["votes"][s][key][c] if signed and relative[(t, c)] else parts[t]["votes"][s][key][c]
+                   for t, c in group)
+
+    def cone_of(t, c):
+        votes = parts[t]["votes"][s]
+        return votes["cone"][c] - sum(center[k] * votes["normal"][k][c] for k in range(3))
+    cone = sum(-cone_of(t, c) if relative[(t, c)] else cone_of(t, c) for t, c in group)
+    up = summed("up", True)
+    if abs(cone) < NEARLY_FLAT_CONE_SHARE * summed("cone_size", False) \
+            and abs(up) >= MOSTLY_ALONG_Z_SHARE * summed("area", False):
         return up
     return cone
 
 
 def orient(votes, parts, scales, has_normals):
-    """Per tile and scale, the objects (``tile_partition.components``) its
+    """Per tile and scale, the objects (``tile_partition.surface_objects``) its
     part is to carry turned over: an object is turned when its seam to the
     object it was reached from votes to disagree (from the largest object, by
-    the strongest seams); each group of objects so joined faces away from the
-    cloud's center, as one run's sheets do (outward for a closed one; up
-    where that nearly cancels and the group faces mostly along z). With
+    the strongest seams); each group of objects so joined faces as one run's
+    vote over their faces says (away from the surface's center: outward for
+    a closed sheet; up where that nearly cancels and the group faces mostly
+    along z). With
     input normals, nothing is turned where every object follows them
     (``FOLLOWED_SHARE``); otherwise those that do are never turned and the
     others (small ones too) are joined to them by their seams first."""
     turned = [[[] for _ in range(scales)] for _ in parts]
-    units = [(t, c) for t, part in enumerate(parts) for c in range(len(part["sizes"]))]
-
-    def size(unit):
-        return -parts[unit[0]]["sizes"][unit[1]]
     for s in range(scales):
+        units = [(t, c) for t, part in enumerate(parts) for c in range(len(part["sizes"][s]))]
+
+        def size(unit):
+            return -parts[unit[0]]["sizes"][s][unit[1]]
+        center = _surface_center(parts, s)
         if has_normals and not not_following_normals(parts, s):
             continue  # every object follows the normals: none is turned
         free = not_following_normals(parts, s, small=True) if has_normals else set(units)
@@ -161,7 +180,7 @@ def orient(votes, parts, scales, has_normals):
                     if relative[(t, c)]:
                         turned[t][s].append(c)
                 continue
-            cone = _group_vote(parts, s, group, relative)
+            cone = _group_vote(parts, s, group, relative, center)
             for t, c in group:
                 if relative[(t, c)] ^ (cone < 0):
                     turned[t][s].append(c)

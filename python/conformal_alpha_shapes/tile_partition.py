@@ -10,6 +10,11 @@ import numpy as np
 CHUNK = 1 << 18
 # The cells, in spacings, whose touching joins the points of one object.
 COMPONENT_CELL_SPACINGS = 3.0
+# The halo's outer band, in spacings, whose surface borders (the halo's
+# edge, not the scan's) may join a tile's open sheets across gaps that one
+# run would not join: twice the gap that the join bridges, 8 local spacings
+# (C++: join_open_sheets_across_gaps in internal/orient_surface_parts.h).
+JOINED_GAP_SPACINGS = 16.0
 
 
 def split(sample, tiles, first, band):
@@ -35,7 +40,7 @@ def split(sample, tiles, first, band):
             split(sample[~below], tiles - left, first + left, band)]
 
 
-def _assign(tree, points, margin, index=None, out=None):
+def assign(tree, points, margin, index=None, out=None):
     """Per tile, the rows of ``points`` within ``margin`` of its box (0: its core)."""
     if out is None:
         out, index = {}, np.arange(len(points))
@@ -44,15 +49,15 @@ def _assign(tree, points, margin, index=None, out=None):
         return out
     axis, cut, left, right = tree
     values = points[index, axis]
-    _assign(left, points, margin, index[values < cut + margin], out)
-    _assign(right, points, margin, index[values >= cut - margin], out)
+    assign(left, points, margin, index[values < cut + margin], out)
+    assign(right, points, margin, index[values >= cut - margin], out)
     return out
 
 
 def owners(tree, points):
     """The tile whose core holds each point."""
     owner = np.empty(len(points), dtype=np.int32)
-    for tile, rows in _assign(tree, points, 0.0).items():
+    for tile, rows in assign(tree, points, 0.0).items():
         owner[rows] = tile
     return owner
 
@@ -86,6 +91,33 @@ def components(points, size):
     return np.unique(label, return_inverse=True)[1][of_point]
 
 
+def surface_objects(component, surface, inner):
+    """Per point, its object at one scale, numbered from 0: its ``component``
+    joined with the others that share an orientation group of ``surface``
+    (a scale's surface of the tile's run: the faces that one run's vote
+    turns together, open sheets joined across gaps included), for the groups
+    whose points are all ``inner`` (far enough from the halo's outer edge
+    that no border there took part in their joins)."""
+    group = np.full(len(component), -1, np.int64)
+    group[surface["point_index"][surface["faces"]].ravel()] = np.repeat(surface["orientation_group"], 3)
+    groups = int(group.max()) + 1
+    outer = np.zeros(groups + 1, bool)
+    outer[group[~inner]] = True  # index -1: points off the surface
+    joined = ~outer[group] & (group >= 0)
+    objects = int(component.max()) + 1
+    first, second = component[joined], objects + group[joined]
+    label = np.arange(objects + groups)
+    while True:  # the smallest node of each part, by propagation and pointer jumping
+        smaller = np.minimum(label[first], label[second])
+        before = label.copy()
+        np.minimum.at(label, first, smaller)
+        np.minimum.at(label, second, smaller)
+        label = label[label]
+        if np.array_equal(label, before):
+            break
+    return np.unique(label[:objects], return_inverse=True)[1][component]
+
+
 def record_dtype(has_normals):
     fields = [("index", "<i8"), ("p", "<f8", (3,))]
     return np.dtype(fields + [("n", "<f8", (3,))] if has_normals else fields)
@@ -108,7 +140,7 @@ def write_tile_files(cloud, tree, tiles, folder, margin, kind):
         open(path, "wb").close()
     for start, points, normals in cloud.chunks(CHUNK):
         owner = owners(tree, points) if kind == "halo" else None
-        for tile, rows in _assign(tree, points, margin).items():
+        for tile, rows in assign(tree, points, margin).items():
             if owner is not None:
                 rows = rows[owner[rows] != tile]
             if not len(rows):

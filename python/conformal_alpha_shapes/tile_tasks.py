@@ -189,6 +189,34 @@ def _scale_text(a):
     return text[:-1] if text.endswith(".") else text
 
 
+def _object_votes(surface, objects, index, is_core, center):
+    """What one run's orientation vote sums over an object's faces, per
+    object (``objects``: per point), over the faces this tile counts (those
+    whose vertex of least input index is a core point here, so that every
+    face counts once), coordinates from ``center``: ``cone``, the faces'
+    area normals dotted with a corner (six times the cones' volumes from
+    ``center``, which the driver moves to the surface's center with
+    ``normal``, their sum), ``cone_size`` (their sizes, from ``center``),
+    ``up`` (the normals' z) and ``area`` (their lengths); and the sum and
+    count of the surface vertices on core points (for that center)."""
+    vertices, faces, point_index = surface["vertices"] - np.asarray(center), surface["faces"], surface["point_index"]
+    corners = point_index[faces]
+    counted = is_core[corners[np.arange(len(faces)), np.argmin(index[corners], axis=1)]]
+    faces, of_face = faces[counted], objects[corners[counted, 0]]
+    p0 = vertices[faces[:, 0]]
+    normal = np.cross(vertices[faces[:, 1]] - p0, vertices[faces[:, 2]] - p0)
+    cone = np.einsum("ij,ij->i", normal, p0)
+    count = int(objects.max()) + 1 if len(objects) else 0
+
+    def summed(weights):
+        return np.bincount(of_face, weights=weights, minlength=count).tolist()
+    on_core = is_core[point_index]
+    return {"cone": summed(cone), "normal": [summed(normal[:, k]) for k in range(3)],
+            "cone_size": summed(np.abs(cone)), "up": summed(normal[:, 2]),
+            "area": summed(np.linalg.norm(normal, axis=1)),
+            "vertex_sum": vertices[on_core].sum(axis=0).tolist(), "vertex_count": int(on_core.sum())}
+
+
 def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     """A tile's curvature (of ``shape``, held on this worker, or of a shape
     built here): its part (core points), its seam file (halo points' normals,
@@ -198,7 +226,8 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     shape = shape if shape is not None else _TileShape(folder, tile, has_normals, job)
     index, points, is_core = shape.index, shape.points, shape.is_core
     native = shape.built()
-    result = Result(points, native.result(_option_items(job["tile_scales"], "scales"), None))
+    values = native.result(_option_items(job["tile_scales"], "scales"), None)
+    result = Result(points, values)
     per_scale = len(result.layers) // len(job["scales"])
     names, descriptions = [], {}
     for k, tile_name in enumerate(result.layers):
@@ -227,39 +256,38 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
         for key in curvature_file.SCALARS + ("source",):
             records[f"{key}_{name}"] = getattr(layer, key)[core]
     first_layers = [result[result.layers[s * per_scale]] for s in range(len(job["scales"]))]
+    component = tile_partition.components(points, tile_partition.COMPONENT_CELL_SPACINGS * job["spacing"])
+    inner = np.zeros(len(points), bool)
+    inner_width = max(job["halo_spacings"] - tile_partition.JOINED_GAP_SPACINGS, 0.0) * job["spacing"]
+    inner[tile_partition.assign(tree, points, inner_width)[tile]] = True
+    objects = np.stack([tile_partition.surface_objects(component, surface, inner) for surface in values["surfaces"]])
+    tile_io.save_array(tile_partition.tile_path(folder, tile, "objects.npy"), objects[:, core])
     halo = np.flatnonzero(~is_core)
     seam = os.path.join(folder, "tiles", f"seam_{tile:05d}.npy")
-    seam_normals = np.stack([layer.normal[halo].astype(np.float32) for layer in first_layers])
-    component = tile_partition.components(points, tile_partition.COMPONENT_CELL_SPACINGS * job["spacing"])
-    tile_io.save_array(tile_partition.tile_path(folder, tile, "component.npy"), component[core])
-    seam_records = np.empty(len(halo), [("index", "<i8"), ("owner", "<i4"), ("component", "<i4"),
+    seam_records = np.empty(len(halo), [("index", "<i8"), ("owner", "<i4"),
+                                        ("object", "<i4", (len(first_layers),)),
                                         ("normal", "<f4", (len(first_layers), 3))])
     seam_records["index"] = index[halo]
     seam_records["owner"] = tile_partition.owners(tree, points[halo])
-    seam_records["component"] = component[halo]
-    seam_records["normal"] = np.moveaxis(seam_normals, 0, 1)
+    seam_records["object"] = objects[:, halo].T
+    seam_records["normal"] = np.moveaxis(np.stack([layer.normal[halo].astype(np.float32) for layer in first_layers]),
+                                         0, 1)
     tile_io.save_array(seam, seam_records)
-    # per scale and object, the cone its surface spans from the cloud's center, on the core's own vertices
-    # (with the sum of its terms' sizes, its normals' z summed and their count, for the rule of nearly flat
-    # cones), and with input normals how many of those agree with them, of how many
-    cones, cone_sizes, up, counts, agreement = [], [], [], [], []
-    objects = int(component.max()) + 1
-    for layer in first_layers:
-        own = core[layer.source[core] == 0]
-        terms = np.einsum("ij,ij->i", layer.normal[own], points[own] - np.asarray(center))
-        cones.append(np.bincount(component[own], weights=terms, minlength=objects).tolist())
-        cone_sizes.append(np.bincount(component[own], weights=np.abs(terms), minlength=objects).tolist())
-        up.append(np.bincount(component[own], weights=layer.normal[own, 2], minlength=objects).tolist())
-        counts.append(np.bincount(component[own], minlength=objects).tolist())
-        if shape.normals is not None:
+    votes = [_object_votes(surface, of_points, index, is_core, center) for surface, of_points in
+             zip(values["surfaces"], objects)]
+    # with input normals, per scale and object, how many of its core vertices' normals agree with them, of how many
+    agreement = []
+    if shape.normals is not None:
+        for layer, of_points in zip(first_layers, objects):
+            own = core[layer.source[core] == 0]
             agree = np.einsum("ij,ij->i", layer.normal[own], shape.normals[own]) > 0
-            agreement.append([np.bincount(component[own], weights=agree, minlength=objects).astype(int).tolist(),
-                              np.bincount(component[own], minlength=objects).tolist()])
+            count = int(of_points.max()) + 1
+            agreement.append([np.bincount(of_points[own], weights=agree, minlength=count).astype(int).tolist(),
+                              np.bincount(of_points[own], minlength=count).tolist()])
     part = tile_partition.part_path(folder, tile)
     tile_io.write_part(part, records, names, descriptions)
-    sizes = np.bincount(component[core], minlength=objects).tolist()
-    return {"names": names, "descriptions": descriptions, "cones": cones, "cone_sizes": cone_sizes, "up": up,
-            "counts": counts, "agreement": agreement, "sizes": sizes,
+    sizes = [np.bincount(of_points[core], minlength=int(of_points.max()) + 1).tolist() for of_points in objects]
+    return {"names": names, "descriptions": descriptions, "votes": votes, "agreement": agreement, "sizes": sizes,
             "size": os.path.getsize(part),
             "sha256": tile_io.file_digest(part), "seconds": time.monotonic() - started,
             "memory": _peak_memory(), "points": len(points), "core": len(core),

@@ -46,6 +46,8 @@ COVERAGE = 0.99
 # window, a few far-reaching closing values decide the scale and a tile's
 # halo may not hold them: the summary says so (the manual, "Tiled Processing").
 WIDE_TAIL = 2.5
+# The format of a run's folder: a run kept by another format starts over.
+RUN_FORMAT = 2
 # The share of the workers' memory that the held shapes may take.
 HELD_SHAPES_SHARE = 0.5
 # estimate_noise()'s sample of the points (noise_sample_size in estimate_noise.h) and the neighbors of its fits
@@ -185,9 +187,11 @@ def _scale_of_closing_values(arrays, coverage):
 
 
 def _arguments_hash(input_path, options):
-    """What makes two runs the same: the input file (path, size, time) and the options."""
+    """What makes two runs the same: the input file (path, size, time), the
+    options and the format of what the run keeps (``RUN_FORMAT``)."""
     stat = os.stat(input_path)
-    text = json.dumps([os.path.abspath(input_path), stat.st_size, stat.st_mtime_ns, options], sort_keys=True)
+    text = json.dumps([os.path.abspath(input_path), stat.st_size, stat.st_mtime_ns, options, RUN_FORMAT],
+                      sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()
 
 
@@ -506,7 +510,7 @@ def _run(client, cloud, output, options, manifest, save, threads, quiet):
     _partition(cloud, output, options, manifest, save, client, quiet)
     tiles = manifest["tiles"]
     job = dict(options, spacing=manifest["spacing"], noise=manifest["noise"], denoise=manifest["denoise"],
-               threads=threads)
+               halo_spacings=manifest["halo_spacings"], threads=threads)
     parts = manifest["parts"]
     todo = [t for t in range(tiles) if not _part_is_finished(output, t, parts.get(str(t)))]
     reused = tiles - len(todo)

@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,8 @@ struct Sheet_facts
   // (the manual, "Orientation"; extract_surface()) makes it positive for a
   // closed sheet, an open sheet, or open sheets joined across gaps
   double cone = 0;
+  // the number of orientation groups of the faces (the surface's "f:orientation_group")
+  std::size_t orientation_groups = 0;
 
   // the share of the vertices in a region whose normal agrees with `truth`
   template <class Region>
@@ -127,6 +130,12 @@ Sheet_facts sheet_facts(const std::vector<Point>& points, const std::vector<Vect
   facts.agreement = surface.number_of_vertices() == 0 ? 0 : double(agree) / double(surface.number_of_vertices());
   if(surface.number_of_vertices() > 0)
     facts.cone = cone_from_the_center(surface);
+  auto group = surface.property_map<Analysis::Surface::Face_index, std::size_t>("f:orientation_group").first;
+  std::set<std::size_t> groups;
+  for(Analysis::Surface::Face_index f : surface.faces())
+    groups.insert(group[f]);
+  BOOST_TEST((groups.empty() || *groups.rbegin() + 1 == groups.size()));  // numbered from 0, every one used
+  facts.orientation_groups = groups.size();
   BOOST_TEST_MESSAGE("noise " << analysis.noise().noise << ", smoothing passes " << analysis.denoising().passes
                      << ", parts " << facts.report.number_of_parts << " (" << facts.report.number_of_closed_parts
                      << " closed), coverage " << facts.coverage << ", agreement " << facts.agreement << ", cone "
@@ -415,6 +424,7 @@ BOOST_AUTO_TEST_CASE(open_sheets_across_a_gap_agree)
   }
   const Sheet_facts facts = sheet_facts(points, normals);
   BOOST_TEST(facts.report.number_of_open_parts() >= 2u);  // the gap is not bridged: two sheets to orient
+  BOOST_TEST(facts.orientation_groups == 1u);              // oriented by one vote
   BOOST_TEST(facts.coverage >= 0.99);
   // the floors face alike, up
   const double lower = facts.agreement_in([](const Point& p) { return p.x() < 0; });

@@ -81,6 +81,11 @@ the report says so.
     \cgalParamType{a model of `WritablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value}
     \cgalParamDefault{not written}
   \cgalParamNEnd
+  \cgalParamNBegin{face_orientation_group_map}
+    \cgalParamDescription{output: for each face added to `pmesh`, its orientation group, numbered from 0: the faces of one group were oriented together by one vote (a sheet, or the open sheets joined across gaps), so that a caller who cuts the surface into pieces, as a tiled run does, knows which pieces one vote turns together; `ADVANCING_FRONT` only}
+    \cgalParamType{a model of `WritablePropertyMap` with `face_descriptor` as key and `std::size_t` as value}
+    \cgalParamDefault{not written}
+  \cgalParamNEnd
   \cgalParamNBegin{reference_normals}
     \cgalParamDescription{a normal per input point (a scanner's), or an empty range; `ADVANCING_FRONT` only}
     \cgalParamType{a random access range of `Vector_3`, indexed by input point}

@@ -55,7 +55,10 @@ input, and values are reported by input index. Only `shape()` is in the
 working frame, the input recentered and scaled by a power of two, so that
 no construction overflows or underflows whatever the input's magnitude.
 
-Surfaces are `Surface_mesh` objects with the vertex properties
+Surfaces are `Surface_mesh` objects with the face property
+`"f:orientation_group"` (`std::size_t`: the faces one vote oriented together,
+see the named parameter `face_orientation_group_map` of `extract_surface()`;
+`std::size_t(-1)` with the solid boundary), the vertex properties
 `"v:input_index"` (`std::size_t`, an index of the input) and, after
 `estimate_curvatures()`, `"v:normal"` (`Vector_3`), `"v:mean_curvature"`,
 `"v:gaussian_curvature"`, `"v:k1"`, `"v:k2"`, `"v:radius"` (`double`),
@@ -225,10 +228,13 @@ public:
     require_shape("surface");
     surface.clear();
     auto input_index = surface.template add_property_map<Surface_vertex, std::size_t>("v:input_index").first;
+    auto group = surface.template add_property_map<typename Surface::Face_index, std::size_t>(
+      "f:orientation_group", std::size_t(-1)).first;
     Surface_report report =
       m_extraction == ADVANCING_FRONT
         ? front().extract_surface(a, surface, parameters::vertex_input_index_map(
-            input_index, parameters::reference_normals(std::cref(m_reference_normals))))
+            input_index, parameters::face_orientation_group_map(
+              group, parameters::reference_normals(std::cref(m_reference_normals)))))
         : extract_surface(m_shape, a, surface,
                           parameters::vertex_input_index_map(input_index, parameters::surface_extraction(m_extraction)));
     internal::surface_to_input(surface, input_index, m_input, report);

@@ -20,6 +20,7 @@ enum vertex_principal_curvatures_and_directions_map_t { vertex_principal_curvatu
 enum ring_size_t { ring_size };
 enum estimator_t { estimator };
 enum vertex_input_index_map_t { vertex_input_index_map };
+enum face_orientation_group_map_t { face_orientation_group_map };
 enum local_feature_size_estimator_t { local_feature_size_estimator };
 enum local_feature_sizes_t { local_feature_sizes };
 enum coverage_t { coverage };
@@ -94,6 +95,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_principal_curvatures_and_directions_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(ring_size)
 CGAL_CAS3_ADD_NAMED_PARAMETER(estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(vertex_input_index_map)
+CGAL_CAS3_ADD_NAMED_PARAMETER(face_orientation_group_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(local_feature_size_estimator)
 CGAL_CAS3_ADD_NAMED_PARAMETER(local_feature_sizes)
 CGAL_CAS3_ADD_NAMED_PARAMETER(coverage)

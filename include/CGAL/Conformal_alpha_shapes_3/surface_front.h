@@ -286,8 +286,11 @@ private:
       const bool flip = reverse[parts.part_of_triangle[t]] != 0;
       const std::array<vertex_descriptor, 3> face = {mesh_vertex[tri[0]], mesh_vertex[flip ? tri[2] : tri[1]],
                                                      mesh_vertex[flip ? tri[1] : tri[2]]};
-      if(CGAL::Euler::add_face(face, pmesh) != boost::graph_traits<PolygonMesh>::null_face())
-        ++report.number_of_faces;
+      const auto f = CGAL::Euler::add_face(face, pmesh);
+      if(f == boost::graph_traits<PolygonMesh>::null_face())
+        continue;
+      ++report.number_of_faces;
+      output.set_face_group(f, groups.group_of_sheet[sheets.sheet_of_part[parts.part_of_triangle[t]]]);
     }
     if(has_reference)
       report.reference_normal_agreement = internal::reference_agreement<Vector>(soup, parts, reverse, point, given);
