@@ -256,12 +256,26 @@ Accuracy accuracy(const std::vector<Vector>& normal, const std::vector<double>& 
 // of covered points whose H (K) error is within 2 sigma, the ratio of the
 // median sigma to the median absolute error, the ratio of the median H
 // error of the 10% of points of largest relative sigma (sigma / |H|) to
-// that of the others, and the median relative sigma of H.
+// that of the others (`ranking`: absolute errors; `relative_ranking`:
+// relative errors, |error| / |true H|, the pair a user masking by relative
+// sigma reads), and the median relative sigma of H.
 struct Calibration
 {
   double H_within = nan_value, K_within = nan_value, H_ratio = nan_value, K_ratio = nan_value;
-  double ranking = nan_value, relative = nan_value;
+  double ranking = nan_value, relative_ranking = nan_value, relative = nan_value;
 };
+
+// The median of the second values of the 10% of `pairs` of largest first
+// value over that of the others.
+double top_tenth_ratio(std::vector<std::pair<double, double> > pairs)
+{
+  std::sort(pairs.begin(), pairs.end());
+  const std::size_t top = pairs.size() - pairs.size() / 10;
+  std::vector<double> rest, largest;
+  for(std::size_t k = 0; k < pairs.size(); ++k)
+    (k < top ? rest : largest).push_back(pairs[k].second);
+  return quantile(largest, 0.5) / quantile(rest, 0.5);
+}
 
 Calibration calibration(const Layer& layer, const Sample& truth, const Judge& judge)
 {
@@ -270,7 +284,8 @@ Calibration calibration(const Layer& layer, const Sample& truth, const Judge& ju
     return c;
   std::vector<double> eH, eK, sH, sK, relative;
   std::size_t H_in = 0, K_in = 0;
-  std::vector<std::pair<double, double> > by_relative;  // (relative sigma, H error)
+  // (relative sigma, H error), (relative sigma, relative H error)
+  std::vector<std::pair<double, double> > by_relative, relative_by_relative;
   for(std::size_t i = 0; i < layer.H.size(); ++i)
   {
     if(!std::isfinite(layer.H[i]) || !std::isfinite(layer.H_sigma[i]) || !std::isfinite(layer.normal[i].x()))
@@ -288,6 +303,7 @@ Calibration calibration(const Layer& layer, const Sample& truth, const Judge& ju
     const double r = layer.H_sigma[i] / (std::abs(layer.H[i]) + 1e-300);
     relative.push_back(r);
     by_relative.emplace_back(r, e_H / judge.H_scale);
+    relative_by_relative.emplace_back(r, e_H / (std::abs(truth.mean_curvature[i]) + 1e-300));
   }
   if(eH.empty())
     return c;
@@ -296,12 +312,8 @@ Calibration calibration(const Layer& layer, const Sample& truth, const Judge& ju
   c.H_ratio = quantile(sH, 0.5) / quantile(eH, 0.5);
   c.K_ratio = quantile(sK, 0.5) / quantile(eK, 0.5);
   c.relative = quantile(relative, 0.5);
-  std::sort(by_relative.begin(), by_relative.end());
-  const std::size_t top = by_relative.size() - by_relative.size() / 10;
-  std::vector<double> rest, largest;
-  for(std::size_t k = 0; k < by_relative.size(); ++k)
-    (k < top ? rest : largest).push_back(by_relative[k].second);
-  c.ranking = quantile(largest, 0.5) / quantile(rest, 0.5);
+  c.ranking = top_tenth_ratio(by_relative);
+  c.relative_ranking = top_tenth_ratio(relative_by_relative);
   return c;
 }
 
@@ -572,9 +584,10 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
       {
         const Calibration c = calibration(layer, truth, judge);
         std::printf("calibration %-10s %6zu %5s %-5s H within 2 sigma %5.1f%%  K %5.1f%%  median sigma/error H %5.2f"
-                    "  K %5.2f  top-10%% sigma error ratio %5.2f  median sigma/|H| %7.3f\n",
+                    "  K %5.2f  top-10%% sigma error ratio %5.2f (relative errors %5.2f)  median sigma/|H| %7.3f\n",
                     names[t].c_str(), s.points.size(), noise_label(noise).c_str(), layer.label.c_str(),
-                    100 * c.H_within, 100 * c.K_within, c.H_ratio, c.K_ratio, c.ranking, c.relative);
+                    100 * c.H_within, 100 * c.K_within, c.H_ratio, c.K_ratio, c.ranking, c.relative_ranking,
+                    c.relative);
       }
       const Accuracy a = accuracy(layer.normal, layer.H, layer.K, all, truth, judge);
       row.layers += (row.layers.empty() ? "" : " ") + layer.label + ":" + error(a.H_med, planar);
