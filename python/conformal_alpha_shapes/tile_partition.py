@@ -78,9 +78,14 @@ def components(points, size):
         found = cells[at] == neighbor
         first.append(np.flatnonzero(found))
         second.append(at[found])
-    first, second = np.concatenate(first), np.concatenate(second)
-    label = np.arange(len(cells))
-    while True:  # the smallest cell of each group, by propagation and pointer jumping
+    return _connected(len(cells), np.concatenate(first), np.concatenate(second))[of_point]
+
+
+def _connected(nodes, first, second):
+    """Labels (0, 1, ...) of the connected parts of the graph of ``nodes``
+    nodes whose edges join ``first[k]`` and ``second[k]``."""
+    label = np.arange(nodes)
+    while True:  # the smallest node of each part, by propagation and pointer jumping
         smaller = np.minimum(label[first], label[second])
         before = label.copy()
         np.minimum.at(label, first, smaller)
@@ -88,7 +93,7 @@ def components(points, size):
         label = label[label]
         if np.array_equal(label, before):
             break
-    return np.unique(label, return_inverse=True)[1][of_point]
+    return np.unique(label, return_inverse=True)[1]
 
 
 def surface_objects(component, surface, inner):
@@ -105,16 +110,7 @@ def surface_objects(component, surface, inner):
     outer[group[~inner]] = True  # index -1: points off the surface
     joined = ~outer[group] & (group >= 0)
     objects = int(component.max()) + 1
-    first, second = component[joined], objects + group[joined]
-    label = np.arange(objects + groups)
-    while True:  # the smallest node of each part, by propagation and pointer jumping
-        smaller = np.minimum(label[first], label[second])
-        before = label.copy()
-        np.minimum.at(label, first, smaller)
-        np.minimum.at(label, second, smaller)
-        label = label[label]
-        if np.array_equal(label, before):
-            break
+    label = _connected(objects + groups, component[joined], objects + group[joined])
     return np.unique(label[:objects], return_inverse=True)[1][component]
 
 

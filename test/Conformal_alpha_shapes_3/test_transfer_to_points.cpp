@@ -192,21 +192,27 @@ std::vector<CAS3::Vertex_curvature<K> > made_up_values(const Surface_mesh& mesh)
   return values;
 }
 
-// A sample of the unit sphere, its shape, and the shape's surface with the
-// cap above z = 0.8 cut off: the points of the cap are off the surface.
-struct Sphere_without_cap
+// A sample of the unit sphere (`n` points), its shape and the shape's surface.
+struct Sphere_surface
 {
-  std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(3000, 1, 1, 1);
-  Cas cas{pts.begin(), pts.end()};
+  std::vector<Point> pts;
+  Cas cas;
   Surface_mesh mesh;
   Surface_mesh::Property_map<Surface_mesh::Vertex_index, std::size_t> input_index =
     mesh.add_property_map<Surface_mesh::Vertex_index, std::size_t>("v:input_index").first;
 
-  Sphere_without_cap()
+  explicit Sphere_surface(std::size_t n = 2000)
+    : pts(cas3_test::ellipsoid_sample<Point>(n, 1, 1, 1)), cas(pts.begin(), pts.end())
   {
     CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
-    cas3_test::remove_cap_above(mesh, 0.8);
   }
+};
+
+// The same with 3000 points and the surface's cap above z = 0.8 cut off:
+// the points of the cap are off the surface.
+struct Sphere_without_cap : Sphere_surface
+{
+  Sphere_without_cap() : Sphere_surface(3000) { cas3_test::remove_cap_above(mesh, 0.8); }
 };
 
 // Where the nearest surface point is a vertex without a value (its own fit
@@ -216,11 +222,11 @@ struct Sphere_without_cap
 BOOST_AUTO_TEST_CASE(a_vertex_without_a_value_takes_its_neighbors_mean)
 {
   typedef Surface_mesh::Vertex_index Vertex;
-  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(2000, 1, 1, 1);
-  const Cas cas(pts.begin(), pts.end());
-  Surface_mesh mesh;
-  auto input_index = mesh.add_property_map<Vertex, std::size_t>("v:input_index").first;
-  CAS3::extract_surface(cas, CAS3::suggest_scale(cas), mesh, CAS3::parameters::vertex_input_index_map(input_index));
+  const Sphere_surface sphere;
+  const std::vector<Point>& pts = sphere.pts;
+  const Cas& cas = sphere.cas;
+  const Surface_mesh& mesh = sphere.mesh;
+  const auto& input_index = sphere.input_index;
   std::vector<CAS3::Vertex_curvature<K> > values = made_up_values(mesh);
   std::vector<Vertex> cleared;
   for(Vertex v : mesh.vertices())
@@ -268,12 +274,8 @@ BOOST_AUTO_TEST_CASE(a_vertex_without_a_value_takes_its_neighbors_mean)
 BOOST_AUTO_TEST_CASE(a_pinched_vertex_takes_its_surface_vertices_mean_in_any_order)
 {
   typedef Surface_mesh::Vertex_index Vertex;
-  const std::vector<Point> pts = cas3_test::ellipsoid_sample<Point>(2000, 1, 1, 1);
-  const Cas cas(pts.begin(), pts.end());
-  Surface_mesh sphere;
-  auto sphere_index = sphere.add_property_map<Vertex, std::size_t>("v:input_index").first;
-  CAS3::extract_surface(cas, CAS3::suggest_scale(cas), sphere,
-                        CAS3::parameters::vertex_input_index_map(sphere_index));
+  const Sphere_surface whole;
+  const Surface_mesh& sphere = whole.mesh;
   const std::vector<CAS3::Vertex_curvature<K> > values = made_up_values(sphere);
   // the copy's values: the normal and directions turned by 60 degrees about z, k1 = k2 = 3
   const double c60 = 0.5, s60 = std::sqrt(3.) / 2;
@@ -295,7 +297,7 @@ BOOST_AUTO_TEST_CASE(a_pinched_vertex_takes_its_surface_vertices_mean_in_any_ord
       for(Vertex v : sphere.vertices())
       {
         to[std::size_t(v)] = mesh.add_vertex(CGAL::ORIGIN + (copy ? 2. : 1.) * (sphere.point(v) - CGAL::ORIGIN));
-        input_index[to[std::size_t(v)]] = sphere_index[v];
+        input_index[to[std::size_t(v)]] = whole.input_index[v];
         layers[0].push_back(copy ? copy_value(values[std::size_t(v)]) : values[std::size_t(v)]);
       }
       for(Surface_mesh::Face_index f : sphere.faces())
@@ -306,8 +308,8 @@ BOOST_AUTO_TEST_CASE(a_pinched_vertex_takes_its_surface_vertices_mean_in_any_ord
         mesh.add_face(corners);
       }
     }
-    std::vector<CAS3::Point_curvature<K> > out(pts.size());
-    CAS3::transfer_to_points(cas, mesh, layers, [&](std::size_t) { return CGAL::make_property_map(out); },
+    std::vector<CAS3::Point_curvature<K> > out(whole.pts.size());
+    CAS3::transfer_to_points(whole.cas, mesh, layers, [&](std::size_t) { return CGAL::make_property_map(out); },
                              CAS3::parameters::vertex_input_index_map(input_index));
     return out;
   };
@@ -321,7 +323,7 @@ BOOST_AUTO_TEST_CASE(a_pinched_vertex_takes_its_surface_vertices_mean_in_any_ord
     const double H = (a.mean_curvature() + 4 * b.mean_curvature()) / 5;
     for(const std::vector<CAS3::Point_curvature<K> >* out : {&sphere_first, &copy_first})
     {
-      const CAS3::Point_curvature<K>& c = (*out)[sphere_index[v]];
+      const CAS3::Point_curvature<K>& c = (*out)[whole.input_index[v]];
       BOOST_TEST_INFO("vertex " << std::size_t(v) << ", H " << c.mean_curvature << " against " << H);
       BOOST_TEST(c.source == CAS3::SURFACE_VERTEX);
       BOOST_TEST(std::abs(c.mean_curvature - H) < 1e-9);
