@@ -189,9 +189,9 @@ def _scale_text(a):
     return text[:-1] if text.endswith(".") else text
 
 
-def _object_votes(surface, objects, index, is_core, center):
+def _object_votes(surface, objects, count, index, is_core, center):
     """What one run's orientation vote sums over an object's faces, per
-    object (``objects``: per point), over the faces this tile counts (those
+    object (``objects``: per point, ``count`` of them), over the faces this tile counts (those
     whose vertex of least input index is a core point here, so that every
     face counts once), coordinates from ``center``: ``cone``, the faces'
     area normals dotted with a corner (six times the cones' volumes from
@@ -206,7 +206,6 @@ def _object_votes(surface, objects, index, is_core, center):
     p0 = vertices[faces[:, 0]]
     normal = np.cross(vertices[faces[:, 1]] - p0, vertices[faces[:, 2]] - p0)
     cone = np.einsum("ij,ij->i", normal, p0)
-    count = int(objects.max()) + 1 if len(objects) else 0
 
     def summed(weights):
         return np.bincount(of_face, weights=weights, minlength=count).tolist()
@@ -261,6 +260,7 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     inner_width = max(job["halo_spacings"] - tile_partition.JOINED_GAP_SPACINGS, 0.0) * job["spacing"]
     inner[tile_partition.assign(tree, points, inner_width)[tile]] = True
     objects = np.stack([tile_partition.surface_objects(component, surface, inner) for surface in values["surfaces"]])
+    counts = (objects.max(axis=1) + 1).tolist()  # per scale, its objects' number
     tile_io.save_array(tile_partition.tile_path(folder, tile, "objects.npy"), objects[:, core])
     halo = np.flatnonzero(~is_core)
     seam = os.path.join(folder, "tiles", f"seam_{tile:05d}.npy")
@@ -273,20 +273,19 @@ def tile_curvatures(folder, tile, has_normals, job, center, tree, shape=None):
     seam_records["normal"] = np.moveaxis(np.stack([layer.normal[halo].astype(np.float32) for layer in first_layers]),
                                          0, 1)
     tile_io.save_array(seam, seam_records)
-    votes = [_object_votes(surface, of_points, index, is_core, center) for surface, of_points in
-             zip(values["surfaces"], objects)]
+    votes = [_object_votes(surface, of_points, count, index, is_core, center) for surface, of_points, count in
+             zip(values["surfaces"], objects, counts)]
     # with input normals, per scale and object, how many of its core vertices' normals agree with them, of how many
     agreement = []
     if shape.normals is not None:
-        for layer, of_points in zip(first_layers, objects):
+        for layer, of_points, count in zip(first_layers, objects, counts):
             own = core[layer.source[core] == 0]
             agree = np.einsum("ij,ij->i", layer.normal[own], shape.normals[own]) > 0
-            count = int(of_points.max()) + 1
             agreement.append([np.bincount(of_points[own], weights=agree, minlength=count).astype(int).tolist(),
                               np.bincount(of_points[own], minlength=count).tolist()])
     part = tile_partition.part_path(folder, tile)
     tile_io.write_part(part, records, names, descriptions)
-    sizes = [np.bincount(of_points[core], minlength=int(of_points.max()) + 1).tolist() for of_points in objects]
+    sizes = [np.bincount(of_points[core], minlength=count).tolist() for of_points, count in zip(objects, counts)]
     return {"names": names, "descriptions": descriptions, "votes": votes, "agreement": agreement, "sizes": sizes,
             "size": os.path.getsize(part),
             "sha256": tile_io.file_digest(part), "seconds": time.monotonic() - started,

@@ -81,12 +81,12 @@ Point_curvature<GT> weighted_value(const std::vector<std::pair<std::size_t, doub
     c.uncertainty = distance > 0 ? grown_uncertainty(u, distance, max_k, min_k) : u;
     return c;
   };
-  if(sources.size() == 1)
-  {
-    const Vertex_curvature<GT>& e = values[sources.front().first];
+  auto one = [&](const Vertex_curvature<GT>& e) {
     return record(e.radius, e.normal, e.principal.max_curvature, e.principal.min_curvature,
                   e.principal.max_direction, e.principal.min_direction, e.uncertainty);
-  }
+  };
+  if(sources.size() == 1)
+    return one(values[sources.front().first]);
   double total = 0;
   for(const auto& s : sources)
     total += s.second;
@@ -112,14 +112,9 @@ Point_curvature<GT> weighted_value(const std::vector<std::pair<std::size_t, doub
     u.mean_curvature_noise += w * e.uncertainty.mean_curvature_noise;
   }
   if(!(n.norm() > 0.5))
-  {
-    const Vertex_curvature<GT>& e =
-      values[std::max_element(sources.begin(), sources.end(), [](const auto& x, const auto& y) {
-        return x.second < y.second;
-      })->first];
-    return record(e.radius, e.normal, e.principal.max_curvature, e.principal.min_curvature,
-                  e.principal.max_direction, e.principal.min_direction, e.uncertainty);
-  }
+    return one(values[std::max_element(sources.begin(), sources.end(), [](const auto& x, const auto& y) {
+                        return x.second < y.second;
+                      })->first]);
   n.normalize();
   max_d = (max_d - max_d.dot(n) * n).normalized();
   return record(r, vector(n), max_k, min_k, vector(max_d), vector(n.cross(max_d)), u);
