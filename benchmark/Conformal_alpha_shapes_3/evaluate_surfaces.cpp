@@ -102,6 +102,7 @@ struct Layer
   std::vector<Vector> normal;  // per input point; NaN where undefined
   std::vector<double> H, K;    // per input point; NaN where undefined
   std::vector<double> H_sigma, K_sigma;  // their standard uncertainties
+  std::vector<double> H_noise_sigma;     // the noise's part of H's
   std::vector<double> radius;  // per input point, in measured spacings; NaN where undefined
   int components = -1;         // surface components, -1 when not reported
   std::vector<int> piece;      // per input point, the connected piece of the surface its vertex is on; -1 off it
@@ -172,6 +173,7 @@ std::vector<Layer> run_pipeline(const std::vector<Point>& points, const std::vec
       layer.K.push_back(ok ? double(p.gaussian_curvature) : nan_value);
       layer.H_sigma.push_back(ok ? double(p.uncertainty.mean_curvature) : nan_value);
       layer.K_sigma.push_back(ok ? double(p.uncertainty.gaussian_curvature) : nan_value);
+      layer.H_noise_sigma.push_back(ok ? double(p.uncertainty.mean_curvature_noise) : nan_value);
       layer.radius.push_back(ok && spacing > 0 ? p.radius / spacing : nan_value);
     }
     layers.push_back(std::move(layer));
@@ -262,6 +264,7 @@ Accuracy accuracy(const std::vector<Vector>& normal, const std::vector<double>& 
 struct Calibration
 {
   double H_within = nan_value, K_within = nan_value, H_ratio = nan_value, K_ratio = nan_value;
+  double H_noise_ratio = nan_value;  // the noise's part of sigma alone: 1.48 where the error is noise
   double ranking = nan_value, relative_ranking = nan_value, relative = nan_value;
 };
 
@@ -282,7 +285,7 @@ Calibration calibration(const Layer& layer, const Sample& truth, const Judge& ju
   Calibration c;
   if(truth.mean_curvature.empty() || judge.planar)
     return c;
-  std::vector<double> eH, eK, sH, sK, relative;
+  std::vector<double> eH, eK, sH, sK, sH_noise, relative;
   std::size_t H_in = 0, K_in = 0;
   // (relative sigma, H error), (relative sigma, relative H error)
   std::vector<std::pair<double, double> > by_relative, relative_by_relative;
@@ -298,6 +301,7 @@ Calibration calibration(const Layer& layer, const Sample& truth, const Judge& ju
     eK.push_back(e_K);
     sH.push_back(layer.H_sigma[i]);
     sK.push_back(layer.K_sigma[i]);
+    sH_noise.push_back(layer.H_noise_sigma[i]);
     H_in += e_H <= 2 * layer.H_sigma[i] ? 1 : 0;
     K_in += e_K <= 2 * layer.K_sigma[i] ? 1 : 0;
     const double r = layer.H_sigma[i] / (std::abs(layer.H[i]) + 1e-300);
@@ -311,6 +315,7 @@ Calibration calibration(const Layer& layer, const Sample& truth, const Judge& ju
   c.K_within = double(K_in) / double(eK.size());
   c.H_ratio = quantile(sH, 0.5) / quantile(eH, 0.5);
   c.K_ratio = quantile(sK, 0.5) / quantile(eK, 0.5);
+  c.H_noise_ratio = quantile(sH_noise, 0.5) / quantile(eH, 0.5);
   c.relative = quantile(relative, 0.5);
   c.ranking = top_tenth_ratio(by_relative);
   c.relative_ranking = top_tenth_ratio(relative_by_relative);
@@ -584,10 +589,11 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
       {
         const Calibration c = calibration(layer, truth, judge);
         std::printf("calibration %-10s %6zu %5s %-5s H within 2 sigma %5.1f%%  K %5.1f%%  median sigma/error H %5.2f"
-                    "  K %5.2f  top-10%% sigma error ratio %5.2f (relative errors %5.2f)  median sigma/|H| %7.3f\n",
+                    "  K %5.2f  top-10%% sigma error ratio %5.2f (relative errors %5.2f)  median sigma/|H| %7.3f"
+                    "  noise part H %5.2f\n",
                     names[t].c_str(), s.points.size(), noise_label(noise).c_str(), layer.label.c_str(),
                     100 * c.H_within, 100 * c.K_within, c.H_ratio, c.K_ratio, c.ranking, c.relative_ranking,
-                    c.relative);
+                    c.relative, c.H_noise_ratio);
       }
       const Accuracy a = accuracy(layer.normal, layer.H, layer.K, all, truth, judge);
       row.layers += (row.layers.empty() ? "" : " ") + layer.label + ":" + error(a.H_med, planar);

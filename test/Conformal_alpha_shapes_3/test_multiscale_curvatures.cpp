@@ -763,7 +763,7 @@ BOOST_AUTO_TEST_CASE(the_automatic_layer_is_the_same_whatever_radii_beside_it)
 // values are within two sigma at 8,000 points, 93% with it.
 BOOST_AUTO_TEST_CASE(uncertainties_are_calibrated)
 {
-  for(const double noise : {0.0, 0.1})
+  for(const double noise : {0.0, 0.1, 0.3})
   {
     Sample s = cas3_analytic::ellipsoid_truth_sample<Point, Vector>(invariance_points, 1, 0.8, 0.6);
     if(noise > 0)

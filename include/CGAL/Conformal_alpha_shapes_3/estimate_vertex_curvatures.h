@@ -323,9 +323,14 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamDefault{0: measured at each vertex from the fits}
   \cgalParamNEnd
   \cgalParamNBegin{smoothing_radius}
-    \cgalParamDescription{the radius, in the units of the points, over which the points were smoothed before the mesh was made (`Denoising_plan::smoothing_radius_in_spacings()` times the spacing after `denoise()`): in the uncertainties, a fit smaller than that sees `noise_level` as a smooth field, and counts it as `(r / smoothing_radius)^2` of itself at radius `r`}
+    \cgalParamDescription{the radius, in the units of the points, over which the points were smoothed before the mesh was made (`Denoising_plan::smoothing_radius_in_spacings()` times the spacing after `denoise()`): in the uncertainties, a fit of radius `r` sees `noise_level` as a smooth field, `(r / smoothing_radius)^2` of itself below that radius, leveling off at 0.93 of it above (the manual, section \ref CAS3_Uncertainty)}
     \cgalParamType{`double`}
     \cgalParamDefault{0: the points were not smoothed}
+  \cgalParamNEnd
+  \cgalParamNBegin{smoothing_passes}
+    \cgalParamDescription{the smoothing's passes (`Denoising_plan::passes`), with `smoothing_radius`: after two or more, fits smaller than 0.45 `smoothing_radius` see less of the noise still}
+    \cgalParamType{`int`}
+    \cgalParamDefault{1}
   \cgalParamNEnd
   \cgalParamNBegin{fit_center_key_map}
     \cgalParamDescription{the keys of the vertices in whose increasing order the large radii's centers are chosen (ties by position); the same keys for the same vertices of two meshes give the same centers where the meshes agree}
@@ -363,8 +368,7 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
   const std::vector<internal::Vec3> normals = internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index);
   const double noise =
     CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::noise_level), 0.);
-  const double smoothing =
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::smoothing_radius), 0.);
+  const internal::Noise_smoothing smoothing = internal::get_noise_smoothing(np);
   std::vector<internal::Vertex_estimate> estimates(graph.size());
   internal::estimate_at_every_vertex<ConcurrencyTag>(
     graph, normals, rules, estimator, noise, 0, smoothing, internal::fit_center_keys(pmesh, vertex_index, graph, np),
@@ -389,7 +393,7 @@ spacings (`Neighborhood::spacings()`, and the candidates of
 `Neighborhood::automatic()`) are multiples of `sample_spacing`.
 
 \cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map, vertex_index_map, estimator, noise_level, smoothing_radius}
+  \cgalParamNBegin{vertex_point_map, vertex_index_map, estimator, noise_level, smoothing_radius, smoothing_passes}
     \cgalParamDescription{as above}
   \cgalParamNEnd
   \cgalParamNBegin{sample_spacing}
@@ -433,7 +437,7 @@ estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborh
   internal::estimate_at_every_vertex<ConcurrencyTag>(
     graph, internal::chen_wu_normals<ConcurrencyTag>(pmesh, vpm, vertex_index), rules, estimator,
     choose_parameter(get_parameter(np, internal_np_cas3::noise_level), 0.), spacing,
-    choose_parameter(get_parameter(np, internal_np_cas3::smoothing_radius), 0.),
+    internal::get_noise_smoothing(np),
     internal::fit_center_keys(pmesh, vertex_index, graph, np),
     [&](std::size_t r, std::size_t v, const internal::Vertex_estimate& e) {
       curvatures[r][v] = internal::to_vertex_curvature<GT>(e);
@@ -470,7 +474,7 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   std::vector<internal::Vec3> normals(graph.size());
   for(std::size_t i = 0; i < graph.size(); ++i)
     normals[i] = internal::chen_wu_normal(by_index[i], pmesh, vpm);
-  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, 0, 0, nullptr);
+  const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, 0, internal::Noise_smoothing(), nullptr);
   internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
   internal::Vertex_estimate estimate;
   estimation.estimate(0, workspace, &estimate);

@@ -361,7 +361,8 @@ private:
         surface, in_working_frame,
         parameters::sample_spacing(m_noise.spacing, parameters::noise_level(m_noise.noise * m_noise.spacing,
           parameters::smoothing_radius(m_denoising.smoothing_radius_in_spacings() * m_noise.spacing,
-          parameters::estimator(estimator).vertex_point_map(working)))));
+          parameters::smoothing_passes(m_denoising.passes,
+          parameters::estimator(estimator).vertex_point_map(working))))));
       return values;
     };
     std::vector<Point_curvature<Kernel> > layer;

@@ -36,6 +36,7 @@ enum neighborhoods_t { neighborhoods };
 enum noise_level_t { noise_level };
 enum sample_spacing_t { sample_spacing };
 enum smoothing_radius_t { smoothing_radius };
+enum smoothing_passes_t { smoothing_passes };
 enum noise_estimate_t { noise_estimate };
 enum fit_center_key_map_t { fit_center_key_map };
 enum orient_each_point_t { orient_each_point };
@@ -111,6 +112,7 @@ CGAL_CAS3_ADD_NAMED_PARAMETER(neighborhoods)
 CGAL_CAS3_ADD_NAMED_PARAMETER(noise_level)
 CGAL_CAS3_ADD_NAMED_PARAMETER(sample_spacing)
 CGAL_CAS3_ADD_NAMED_PARAMETER(smoothing_radius)
+CGAL_CAS3_ADD_NAMED_PARAMETER(smoothing_passes)
 CGAL_CAS3_ADD_NAMED_PARAMETER(noise_estimate)
 CGAL_CAS3_ADD_NAMED_PARAMETER(fit_center_key_map)
 CGAL_CAS3_ADD_NAMED_PARAMETER(orient_each_point)

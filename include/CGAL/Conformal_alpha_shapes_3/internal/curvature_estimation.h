@@ -218,34 +218,70 @@ inline double t_coverage_factor(double nu)
 // variance's few degrees of freedom.
 enum class Residual_degrees { COUNTED, IGNORED };
 
+// How the points were smoothed before the surface was made: `passes` jet
+// projections averaging the noise over `reach` (0: not smoothed).
+struct Noise_smoothing
+{
+  double reach = 0;
+  int passes = 0;
+};
+
+// The share of the sample's noise (as a standard deviation) that a fit of
+// radius `radius` sees on smoothed points. Below the reach the noise is a
+// smooth field whose curvature error grows as 1 / r^2 rather than
+// independent noise's 1 / r^3, a share of (r / reach)^2; above it the share
+// levels off at 0.93 (one jet pass keeps a little less than the whole
+// noise at any scale). A second pass smooths the field further: below 0.45
+// of the reach its share falls in proportion to the radius as well. Both
+// measured on noisy spheres against the errors (the manual, "Uncertainty").
+inline double smoothed_noise_share(double radius, const Noise_smoothing& smoothing)
+{
+  if(!(smoothing.reach > 0) || smoothing.passes <= 0)
+    return 1;
+  constexpr double plateau = 0.93, second_pass_knee = 0.45;
+  const double x = radius / smoothing.reach, x2 = x * x;
+  const double level = x2 / plateau;
+  double share = x2 / std::sqrt(std::sqrt(1 + level * level * level * level));
+  if(smoothing.passes > 1)
+    share *= (std::min)(1., x / second_pass_knee);
+  return share;
+}
+
 // The uncertainty of a fit at radius `radius` whose bias grows at `rates`,
-// the noise's and the bias's added in quadrature. Below `smoothed_reach`,
-// the radius over which the points were smoothed (0: not smoothed), the
-// sample's noise counts as (radius / smoothed_reach)^2 of itself: a fit
-// smaller than the smoothing sees a smooth field, whose curvature error
-// grows as 1 / r^2 rather than independent noise's 1 / r^3.
+// the noise's and the bias's added in quadrature. The noise is the
+// sample's, `sample_noise`, as smoothed_noise_share() says a fit sees it,
+// and the residuals' beyond it: on points that were not smoothed the
+// residuals hold the sample's noise, and only their excess over it (what
+// the quadric misses) adds; on smoothed points they hold what smoothing
+// left, independent of the smooth field, and add whole.
 // With `Residual_degrees::COUNTED` the noise's part is widened by
 // t_coverage_factor() of its effective degrees of freedom (Welch and
-// Satterthwaite's: the sample's noise is known, the residuals' estimated
-// from the fit's few): a 2-spacing fit has about three, and its errors over
-// a residual standard deviation have the long tails of Student's t.
+// Satterthwaite's: the sample's noise is known, the residuals' part
+// estimated from the fit's few): a 2-spacing fit has about three, and its
+// errors over a residual standard deviation have the long tails of
+// Student's t.
 inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, const Bias_rates& rates,
-                                            double sample_noise, double smoothed_reach,
+                                            double sample_noise, const Noise_smoothing& smoothing,
                                             Residual_degrees residual_degrees)
 {
   Estimate_uncertainty u;
   if(!(e.per_noise > 0))
     return u;
-  const double below = smoothed_reach > 0 ? (std::min)(1., (radius / smoothed_reach) * (radius / smoothed_reach)) : 1.;
-  double noise = fit_noise(e, below * sample_noise);
-  const double residual = e.noise * e.noise;
+  const double seen = smoothed_noise_share(radius, smoothing) * sample_noise;
+  const double residual = smoothing.passes > 0 ? e.noise * e.noise
+                                               : (std::max)(0., e.noise * e.noise - sample_noise * sample_noise);
+  double noise = std::sqrt(seen * seen + residual);
   if(residual_degrees == Residual_degrees::COUNTED && residual > 0 && std::isfinite(residual))
   {
-    const double share = noise * noise / residual;  // the whole variance over the residuals'
+    const double share = noise * noise / residual;  // the whole variance over the residuals' part
     noise *= t_coverage_factor(e.degrees_of_freedom * share * share);
   }
   const double r4 = radius * radius * radius * radius;
-  const double se_H = noise * e.per_noise, se_K = noise * e.per_noise_K;
+  const double se_H = noise * e.per_noise;
+  // the first-order variance of K read with the fitted coefficients
+  // overstates it by twice its second-order part, which it counts once
+  const double second = noise * noise * e.per_squared_noise_K, first = noise * e.per_noise_K;
+  const double se_K = std::sqrt((std::max)(first * first - second * second, second * second));
   u.H = std::sqrt(se_H * se_H + rates.squared_H * r4);
   u.H_noise = se_H;
   u.K = std::sqrt(se_K * se_K + rates.squared_K * r4);
@@ -331,13 +367,13 @@ public:
   // by vertex, the keys that order the choice of the centers (Fit_centers).
   // Without keys every radius is fitted at every vertex (the estimate at
   // one vertex, whose graph is only what its search reaches).
-  // `sample_spacing`: 0 where unknown; `smoothed_reach`: see fit_uncertainty().
+  // `sample_spacing`: 0 where unknown; `smoothing`: see fit_uncertainty().
   Curvature_estimation(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                        const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                       double sample_noise, double sample_spacing, double smoothed_reach,
+                       double sample_noise, double sample_spacing, const Noise_smoothing& smoothing,
                        const std::vector<std::uint64_t>* center_keys)
     : m_graph(graph), m_normals(normals), m_rules(rules), m_estimator(estimator), m_sample_noise(sample_noise),
-      m_smoothed_reach(smoothed_reach)
+      m_smoothing(smoothing)
   {
     for(const Neighborhood_rule& rule : rules)
     {
@@ -682,7 +718,7 @@ private:
           // values would be within two sigma at 99% of the points
           out[r] = Vertex_estimate{chosen.curvature, chosen.radius,
                                    choice_uncertainty(ws.candidates, chosen,
-                                     fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothed_reach,
+                                     fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothing,
                                                      Residual_degrees::IGNORED))};
         }
       }
@@ -691,7 +727,7 @@ private:
         const Radius_fit& q = ws.fits[radius_level(rule.radius)];
         if(q.defined)
           out[r] = Vertex_estimate{q.curvature, rule.radius,
-                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise, m_smoothed_reach,
+                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise, m_smoothing,
                                                    Residual_degrees::COUNTED)};
         else
           to_widen.push_back(r);
@@ -710,7 +746,7 @@ private:
         Radius_fit q;
         fit(f, ends[0], radius, radius, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise, m_smoothed_reach,
+          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise, m_smoothing,
                                                                         Residual_degrees::COUNTED)};
       }
   }
@@ -747,7 +783,7 @@ private:
         fit(f, ends[ring], reach, length, ws, true, q);
         if(q.defined)
           out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, Bias_rates(), m_sample_noise,
-                                                                       m_smoothed_reach, Residual_degrees::COUNTED)};
+                                                                       m_smoothing, Residual_degrees::COUNTED)};
       }
     }
   }
@@ -757,7 +793,7 @@ private:
   std::vector<Neighborhood_rule> m_rules;
   Curvature_estimator m_estimator;
   double m_sample_noise;           // of the points before any denoising, model units; 0 when unknown
-  double m_smoothed_reach;         // see fit_uncertainty(); 0 when not smoothed
+  Noise_smoothing m_smoothing;     // see fit_uncertainty()
   std::vector<double> m_radii;     // every rule's radii, increasing
   std::vector<char> m_with_error;  // by radius: whether its fits compute their error
   std::size_t m_rings = 0;         // rings searched: the largest ring size plus two
@@ -779,10 +815,10 @@ private:
 template <typename ConcurrencyTag, typename Write>
 void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                           const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                          double sample_noise, double sample_spacing, double smoothed_reach,
+                          double sample_noise, double sample_spacing, const Noise_smoothing& smoothing,
                           const std::vector<std::uint64_t>& center_keys, Write write)
 {
-  Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, smoothed_reach,
+  Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, smoothing,
                                   &center_keys);
   typedef Curvature_estimation::Workspace Workspace;
   struct Per_thread
@@ -810,7 +846,7 @@ void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& no
 template <typename ConcurrencyTag, typename Write>
 void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                               const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
-                              double sample_noise, double sample_spacing, double smoothed_reach,
+                              double sample_noise, double sample_spacing, const Noise_smoothing& smoothing,
                               const std::vector<std::uint64_t>& center_keys, Write write)
 {
   std::vector<double> candidates;
@@ -831,7 +867,7 @@ void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>
     for(std::size_t r : *pass)
       pass_rules.push_back(rules[r]);
     estimate_in_one_pass<ConcurrencyTag>(graph, normals, pass_rules, estimator, sample_noise, sample_spacing,
-                                         smoothed_reach, center_keys, [&](std::size_t k, std::size_t v, const Vertex_estimate& e) {
+                                         smoothing, center_keys, [&](std::size_t k, std::size_t v, const Vertex_estimate& e) {
                                            write((*pass)[k], v, e);
                                          });
   }

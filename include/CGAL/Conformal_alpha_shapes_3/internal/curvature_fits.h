@@ -191,7 +191,8 @@ struct Quadric_fit_error
   double noise = 0;               // standard deviation of the heights about the fit (model units)
   double degrees_of_freedom = 0;  // effective: weighted rows less what the fit absorbs
   double per_noise = 0;           // standard error of H per unit of noise
-  double per_noise_K = 0;         // standard error of K per unit of noise
+  double per_noise_K = 0;         // standard error of K per unit of noise, to first order in the fitted coefficients
+  double per_squared_noise_K = 0; // of K's second-order term per squared unit of noise
   double per_noise_normal = 0;    // of the normal's direction (radians, both tangent axes) per unit of noise
 };
 
@@ -471,6 +472,11 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     // K = (4 A C - B^2) / fade^2 to first order in the coefficients
     const Eigen::Vector3d gradient(4 * coef(2), -2 * coef(1), 4 * coef(0));
     const double spread_K = gradient.dot(covariance.topLeftCorner<3, 3>() * gradient);
+    // K's second-order term q' Q q (q the coefficients' errors) has variance 2 tr((Q C)^2)
+    Eigen::Matrix3d form;
+    form << 0, 0, 2, 0, -1, 0, 2, 0, 0;
+    const Eigen::Matrix3d QC = form * covariance.topLeftCorner<3, 3>();
+    const double spread_K2 = 2 * (QC * QC).trace();
     // of the least-squares solution (the correction is not fitted)
     const double residuals = (std::max)(0., s * s * zz - 2 * least_squares.dot(rhs)
                                               + least_squares.dot(normal_matrix * least_squares));
@@ -480,6 +486,7 @@ inline bool quadric_fit(const Tangent_frame& f, const Quadric_shell* shells, std
     error->degrees_of_freedom = dof;
     error->per_noise = std::sqrt(spread) / (fade * fade);
     error->per_noise_K = std::sqrt((std::max)(0., spread_K)) / (fade * fade * fade);
+    error->per_squared_noise_K = std::sqrt((std::max)(0., spread_K2)) / (fade * fade * fade * fade);
     error->per_noise_normal = std::sqrt((std::max)(0., covariance(3, 3) + covariance(4, 4))) / fade;
   }
 

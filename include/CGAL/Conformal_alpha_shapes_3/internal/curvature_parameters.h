@@ -43,6 +43,18 @@ Curvature_estimator get_estimator(const NamedParameters& np)
   return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::estimator), QUADRIC_FIT);
 }
 
+// `smoothing_radius` and `smoothing_passes` (one pass when only the radius is given).
+template <typename NamedParameters>
+Noise_smoothing get_noise_smoothing(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Noise_smoothing smoothing;
+  smoothing.reach = choose_parameter(get_parameter(np, internal_np_cas3::smoothing_radius), 0.);
+  smoothing.passes = smoothing.reach > 0 ? choose_parameter(get_parameter(np, internal_np_cas3::smoothing_passes), 1) : 0;
+  return smoothing;
+}
+
 template <typename NamedParameters>
 Neighborhood_rule get_neighborhood_rule(const NamedParameters& np, Curvature_estimator estimator)
 {

@@ -272,6 +272,7 @@ inline bool interpolate_center_fits(const Vec3& n, const std::vector<const Cente
     error.degrees_of_freedom += mean * c.error.degrees_of_freedom;
     error.per_noise += mean * c.error.per_noise;
     error.per_noise_K += mean * c.error.per_noise_K;
+    error.per_squared_noise_K += mean * c.error.per_squared_noise_K;
     error.per_noise_normal += mean * c.error.per_noise_normal;
   }
   if(!(normal.dot(n) > 0))
