@@ -983,6 +983,26 @@ BOOST_AUTO_TEST_CASE(fixed_radius_uncertainty_widens_for_few_residual_degrees)
   BOOST_TEST(known.H == 0.1 * 10, boost::test_tools::tolerance(1e-12));
 }
 
+// The bias rate fitted over the radii, H(r) = H0 + c r^2: its square as
+// fitted, and less its variance (1 / sum w (x - mean x)^2, x = r^2, for
+// weights w = 1 / se^2) for the mean square of the bias, never below 0.
+BOOST_AUTO_TEST_CASE(bias_rate_squares_less_their_variance)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  std::vector<I::Radius_sample> samples;
+  for(double r : {1., 2., 3.})
+    samples.push_back(I::Radius_sample{r, 1 + 0.5 * r * r, 0, 0.1, 0.1});
+  const I::Bias_rates rates = I::bias_rates(samples);
+  const double variance = 1 / (100 * ((11. / 3) * (11. / 3) + (2. / 3) * (2. / 3) + (13. / 3) * (13. / 3)));
+  BOOST_TEST(rates.squared_H == 0.25, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(rates.variance_H == variance, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(rates.less_variance().squared_H == 0.25 - variance, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(rates.less_variance().squared_K == 0);  // K constant: no rate
+  for(I::Radius_sample& q : samples)
+    q.H = 1 + 0.001 * q.radius * q.radius;
+  BOOST_TEST(I::bias_rates(samples).less_variance().squared_H == 0);
+}
+
 // The residuals of a fit to points that were not smoothed hold the
 // sample's noise: they add only their excess over it (what the quadric
 // misses), where on smoothed points they add whole (what smoothing left).

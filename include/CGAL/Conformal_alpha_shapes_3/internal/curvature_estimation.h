@@ -138,14 +138,25 @@ constexpr double large_radius_per_center_spacing = 7;
 
 // The growth of the fits' bias with the radius at one vertex, from the fits
 // at several radii: H(r) = H0 + c r^2 and K(r) = K0 + c_K r^2, fitted by
-// least squares weighted by the fits' inverse variances. The uncertainty
-// takes the fitted rate's square as it is: its expectation is the true
-// rate's square plus the fit's variance, the bias and how unsure the rate
-// is, both of which it must count (the automatic rule, which compares radii,
-// `choose_by_least_squared_error()`, takes the variance off).
+// least squares weighted by the fits' inverse variances. The fitted rate's
+// square overstates the true rate's by the rate's variance (the fits' noise);
+// less that variance it is the mean square of the bias, which the
+// uncertainty of a fixed radius takes. The automatic rule's takes the square
+// as it is: the radius it chose is where its own estimate of the error was
+// least, most often too small, which the variance stands for
+// (`choose_by_least_squared_error()`, which compares radii, takes it off).
 struct Bias_rates
 {
-  double squared_H = 0, squared_K = 0;  // c^2 and c_K^2
+  double squared_H = 0, squared_K = 0;    // c^2 and c_K^2 as fitted
+  double variance_H = 0, variance_K = 0;  // of c and c_K
+
+  Bias_rates less_variance() const
+  {
+    Bias_rates r;
+    r.squared_H = (std::max)(0., squared_H - variance_H);
+    r.squared_K = (std::max)(0., squared_K - variance_K);
+    return r;
+  }
 };
 
 // The standard deviation of the heights' noise that a fit sees: the
@@ -182,8 +193,9 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
     if(!(line.determinant() > 1e-12 * line.w0 * line.w2))
       continue;
     const double c = line.slope();  // per (r / r_max)^2
-    const double squared = c * c / (r_max * r_max * r_max * r_max);
-    (which == 0 ? rates.squared_H : rates.squared_K) = squared;
+    const double r4 = r_max * r_max * r_max * r_max;
+    (which == 0 ? rates.squared_H : rates.squared_K) = c * c / r4;
+    (which == 0 ? rates.variance_H : rates.variance_K) = line.w0 / line.determinant() / r4;
   }
   return rates;
 }
@@ -701,8 +713,7 @@ private:
                                          q.curvature.k1 * q.curvature.k2, noise * q.error.per_noise,
                                          noise * q.error.per_noise_K});
     }
-    const Bias_rates rates = bias_rates(ws.samples);
-
+    const Bias_rates rates = bias_rates(ws.samples), fixed_rates = rates.less_variance();
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
     {
@@ -727,7 +738,7 @@ private:
         const Radius_fit& q = ws.fits[radius_level(rule.radius)];
         if(q.defined)
           out[r] = Vertex_estimate{q.curvature, rule.radius,
-                                   fit_uncertainty(q.error, rule.radius, rates, m_sample_noise, m_smoothing,
+                                   fit_uncertainty(q.error, rule.radius, fixed_rates, m_sample_noise, m_smoothing,
                                                    Residual_degrees::COUNTED)};
         else
           to_widen.push_back(r);
@@ -746,7 +757,7 @@ private:
         Radius_fit q;
         fit(f, ends[0], radius, radius, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, rates, m_sample_noise, m_smoothing,
+          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, fixed_rates, m_sample_noise, m_smoothing,
                                                                         Residual_degrees::COUNTED)};
       }
   }
