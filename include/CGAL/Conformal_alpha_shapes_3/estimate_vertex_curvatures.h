@@ -328,7 +328,7 @@ with the wider rings) gets NaN values and is counted in the return value.
     \cgalParamDefault{0: the points were not smoothed}
   \cgalParamNEnd
   \cgalParamNBegin{smoothing_passes}
-    \cgalParamDescription{the smoothing's passes (`Denoising_plan::passes`), with `smoothing_radius`: after two or more, fits smaller than 0.45 `smoothing_radius` see less of the noise still}
+    \cgalParamDescription{the smoothing's passes (`Denoising_plan::passes`), with `smoothing_radius` (a value below 1 counts as 1): after two or more, fits smaller than 0.45 `smoothing_radius` see less of the noise still}
     \cgalParamType{`int`}
     \cgalParamDefault{1}
   \cgalParamNEnd

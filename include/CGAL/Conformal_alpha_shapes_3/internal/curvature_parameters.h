@@ -18,6 +18,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -43,7 +44,7 @@ Curvature_estimator get_estimator(const NamedParameters& np)
   return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np_cas3::estimator), QUADRIC_FIT);
 }
 
-// `smoothing_radius` and `smoothing_passes` (one pass when only the radius is given).
+// `smoothing_radius` and `smoothing_passes` (at least one pass where a radius is given).
 template <typename NamedParameters>
 Noise_smoothing get_noise_smoothing(const NamedParameters& np)
 {
@@ -51,7 +52,7 @@ Noise_smoothing get_noise_smoothing(const NamedParameters& np)
   using CGAL::parameters::get_parameter;
   Noise_smoothing smoothing;
   smoothing.reach = choose_parameter(get_parameter(np, internal_np_cas3::smoothing_radius), 0.);
-  smoothing.passes = smoothing.reach > 0 ? choose_parameter(get_parameter(np, internal_np_cas3::smoothing_passes), 1) : 0;
+  smoothing.passes = smoothing.reach > 0 ? (std::max)(1, choose_parameter(get_parameter(np, internal_np_cas3::smoothing_passes), 1)) : 0;
   return smoothing;
 }
 
