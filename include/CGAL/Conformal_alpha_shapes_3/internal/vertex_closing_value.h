@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -26,6 +25,7 @@ struct Closing_workspace
     double value;
     std::size_t a, b; // positions in `link`
   };
+  std::vector<typename Shape::Cell_handle> cells;
   std::vector<typename Shape::Facet> facets;
   std::vector<Link_edge> edges;
   std::vector<typename Shape::Vertex_handle> link;
@@ -33,6 +33,34 @@ struct Closing_workspace
   std::vector<std::size_t> parent;
   std::vector<double> turn;      // angle from the vertex to its parent, unwrapped
 };
+
+// The finite facets incident to `v` into ws.facets, each once: a walk over
+// the cells around `v` that keeps its visited cells in the workspace (a
+// star holds a few dozen), where the triangulation's thread-safe walk
+// allocates a hash set of cells per vertex, whose allocations cost more
+// than the walk.
+template <class Shape>
+void finite_facets_around(const Shape& shape, typename Shape::Vertex_handle v, Closing_workspace<Shape>& ws)
+{
+  typedef typename Shape::Cell_handle Cell_handle;
+  ws.facets.clear();
+  ws.cells.clear();
+  ws.cells.push_back(v->cell());
+  for(std::size_t head = 0; head < ws.cells.size(); ++head)
+  {
+    const Cell_handle c = ws.cells[head];
+    for(int i = 0; i < 4; ++i)
+    {
+      if(c->vertex(i) == v)
+        continue;
+      const Cell_handle next = c->neighbor(i);
+      if(c < next && !shape.is_infinite(c, i))
+        ws.facets.emplace_back(c, i);
+      if(std::find(ws.cells.begin(), ws.cells.end(), next) == ws.cells.end())
+        ws.cells.push_back(next);
+    }
+  }
+}
 
 // The closing value of `v`: the smallest conformal value at which the finite
 // facets of the complex around `v` hold a fan that turns once around it,
@@ -50,11 +78,10 @@ template <class Shape>
 double vertex_closing_value(const Shape& shape, typename Shape::Vertex_handle v, Closing_workspace<Shape>& ws)
 {
   typedef typename Shape::Geom_traits::Vector_3 Vector;
-  ws.facets.clear();
   ws.edges.clear();
   ws.link.clear();
   ws.angle.clear();
-  shape.finite_incident_facets_threadsafe(v, std::back_inserter(ws.facets));
+  finite_facets_around(shape, v, ws);
 
   const auto& p = v->point();
   Vector axis = shape.pole(v) - p;
