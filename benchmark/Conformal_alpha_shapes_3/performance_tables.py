@@ -106,7 +106,7 @@ def manual_table(two, one):
     rows = [
         ["`Delaunay_triangulation_3` alone (the unit)"] + cells(lambda r, _: "%.2f s" % r.wall("delaunay")),
         ["construction: input hygiene, noise, smoothing, `Conformal_alpha_shape_3`"] + cells(construction),
-        ["the automatic scale (the front grown once) + `extract_surface()`"]
+        ["the automatic scale (the front grown once, the closing values of its vertices) + `extract_surface()`"]
         + cells(lambda r, _: "%.2fx + %.2fx" % (r.ratio("pipeline", "scale_value"), r.ratio("pipeline", "extract_surface"))),
         ["... the front alone, against a Delaunay build in its own process"]
         + cells(lambda r, _: "%.2f s (%.2fx)" % (r.wall("parts", front), r.ratio("parts", front))),
@@ -157,7 +157,7 @@ def growth_table(rows):
 
 
 THREADED_STAGES = (("construction (hygiene, noise, smoothing, the shape)", "Multiscale_curvatures construction"),
-                   ("the automatic scale (the front grown once)", "scale_value"),
+                   ("the automatic scale (the front grown once, the closing values of its vertices)", "scale_value"),
                    ("`extract_surface()`", "extract_surface"),
                    ("`estimate_curvatures()`, five neighborhoods", "estimate_curvatures"),
                    ("the binary files", "write "))
