@@ -973,19 +973,19 @@ BOOST_AUTO_TEST_CASE(fixed_radius_uncertainty_widens_for_few_residual_degrees)
   e.degrees_of_freedom = 3;
   e.per_noise = e.per_noise_K = e.per_noise_normal = 10;
   const I::Noise_smoothing unsmoothed;
-  const auto counted = I::fit_uncertainty(e, 1, I::Bias_rates(), 0, unsmoothed, I::Residual_degrees::COUNTED);
-  const auto ignored = I::fit_uncertainty(e, 1, I::Bias_rates(), 0, unsmoothed, I::Residual_degrees::IGNORED);
+  const auto counted = I::fit_uncertainty(e, 1, 0, unsmoothed, I::Residual_degrees::COUNTED);
+  const auto ignored = I::fit_uncertainty(e, 1, 0, unsmoothed, I::Residual_degrees::IGNORED);
   BOOST_TEST(ignored.H == 0.1, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(counted.H / ignored.H == I::t_coverage_factor(3), boost::test_tools::tolerance(1e-12));
   BOOST_TEST(counted.K / ignored.K == I::t_coverage_factor(3), boost::test_tools::tolerance(1e-12));
   BOOST_TEST(counted.H_noise == counted.H, boost::test_tools::tolerance(1e-12));
-  const auto known = I::fit_uncertainty(e, 1, I::Bias_rates(), 0.1, unsmoothed, I::Residual_degrees::COUNTED);
+  const auto known = I::fit_uncertainty(e, 1, 0.1, unsmoothed, I::Residual_degrees::COUNTED);
   BOOST_TEST(known.H == 0.1 * 10, boost::test_tools::tolerance(1e-12));
 }
 
-// The bias rate fitted over the radii, H(r) = H0 + c r^2: its square as
-// fitted, and less its variance (1 / sum w (x - mean x)^2, x = r^2, for
-// weights w = 1 / se^2) for the mean square of the bias, never below 0.
+// The bias rate fitted over the radii, H(r) = H0 + c r^2: its square less
+// its variance (1 / sum w (x - mean x)^2, x = r^2, for weights w = 1 / se^2),
+// negative where the rate is below its noise.
 BOOST_AUTO_TEST_CASE(bias_rate_squares_less_their_variance)
 {
   namespace I = CGAL::Conformal_alpha_shapes_3::internal;
@@ -994,13 +994,37 @@ BOOST_AUTO_TEST_CASE(bias_rate_squares_less_their_variance)
     samples.push_back(I::Radius_sample{r, 1 + 0.5 * r * r, 0, 0.1, 0.1});
   const I::Bias_rates rates = I::bias_rates(samples);
   const double variance = 1 / (100 * ((11. / 3) * (11. / 3) + (2. / 3) * (2. / 3) + (13. / 3) * (13. / 3)));
-  BOOST_TEST(rates.squared_H == 0.25, boost::test_tools::tolerance(1e-9));
-  BOOST_TEST(rates.variance_H == variance, boost::test_tools::tolerance(1e-9));
-  BOOST_TEST(rates.less_variance().squared_H == 0.25 - variance, boost::test_tools::tolerance(1e-9));
-  BOOST_TEST(rates.less_variance().squared_K == 0);  // K constant: no rate
-  for(I::Radius_sample& q : samples)
-    q.H = 1 + 0.001 * q.radius * q.radius;
-  BOOST_TEST(I::bias_rates(samples).less_variance().squared_H == 0);
+  BOOST_TEST(rates.excess_H == 0.25 - variance, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(rates.excess_K == -variance, boost::test_tools::tolerance(1e-9));  // K constant: no rate
+  BOOST_TEST(std::isnan(I::bias_rates(std::vector<I::Radius_sample>(1, samples[0])).excess_H));
+}
+
+// The bias that an uncertainty adds is the mean of the excesses of the
+// vertex and of those connected to it within the pooling radius, never
+// below 0, in quadrature with the noise's: sigma^2 + c^2 r^4.
+BOOST_AUTO_TEST_CASE(bias_rates_are_pooled_over_the_vertices_around)
+{
+  namespace I = CGAL::Conformal_alpha_shapes_3::internal;
+  I::Vertex_graph path;  // 0 - 1 - 2 - 3 on a line, one apart
+  for(int i = 0; i < 4; ++i)
+    path.points.push_back(I::Vec3(i, 0, 0));
+  path.first = {0, 1, 3, 5, 6};
+  path.adjacent = {1, 0, 2, 1, 3, 2};
+  std::vector<I::Bias_rates> rates(4);
+  rates[0].excess_H = 4;
+  rates[1].excess_H = -1;
+  rates[2].excess_H = 3;  // vertex 3 has none
+  rates[1].excess_K = -2;
+  I::Nested_neighborhood_search search(4);
+  const I::Bias_widening at_1 = I::pool_bias_rates(path, rates, 1, std::vector<double>(1, 1.5), search);
+  BOOST_TEST(at_1.squared_H == 2.);  // (4 - 1 + 3) / 3
+  BOOST_TEST(at_1.squared_K == 0.);  // negative mean: no bias
+  const I::Bias_widening at_3 = I::pool_bias_rates(path, rates, 3, std::vector<double>(1, 0.5), search);
+  BOOST_TEST(at_3.squared_H == 0.);  // none within reach
+  double sigma_H = 3, sigma_K = 1;
+  at_1.widen(sigma_H, sigma_K, 2.);
+  BOOST_TEST(sigma_H == std::sqrt(9. + 2 * 16), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(sigma_K == 1.);
 }
 
 // The residuals of a fit to points that were not smoothed hold the
@@ -1015,7 +1039,7 @@ BOOST_AUTO_TEST_CASE(residuals_add_beyond_the_noise_they_hold)
   e.per_noise = e.per_noise_K = e.per_noise_normal = 10;
   const I::Noise_smoothing unsmoothed, smoothed{1e-9, 1};  // a reach far below the fit: 0.93 of the noise
   auto H = [&](double sample, const I::Noise_smoothing& s) {
-    return I::fit_uncertainty(e, 1, I::Bias_rates(), sample, s, I::Residual_degrees::IGNORED).H;
+    return I::fit_uncertainty(e, 1, sample, s, I::Residual_degrees::IGNORED).H;
   };
   BOOST_TEST(H(0.1, unsmoothed) == 1, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(H(0.2, unsmoothed) == 2, boost::test_tools::tolerance(1e-12));
@@ -1037,7 +1061,7 @@ BOOST_AUTO_TEST_CASE(gaussian_curvature_uncertainty_counts_its_second_order_once
   e.per_noise_K = 50;
   e.per_squared_noise_K = 300;  // second-order part 3 against a first-order 5
   auto K = [&]() {
-    return I::fit_uncertainty(e, 1, I::Bias_rates(), 0, I::Noise_smoothing(), I::Residual_degrees::IGNORED).K;
+    return I::fit_uncertainty(e, 1, 0, I::Noise_smoothing(), I::Residual_degrees::IGNORED).K;
   };
   BOOST_TEST(K() == 4, boost::test_tools::tolerance(1e-12));
   e.per_noise_K = 30;  // no more than the second-order part

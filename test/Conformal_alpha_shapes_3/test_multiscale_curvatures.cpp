@@ -797,7 +797,12 @@ BOOST_AUTO_TEST_CASE(uncertainties_are_calibrated)
       const bool two_spacings = layer.neighborhood.kind() == CAS3::Neighborhood::SPACINGS
                                 && layer.neighborhood.value() == 2;
       BOOST_TEST(double(H_in) / n >= (noise > 0 ? 0.75 : two_spacings ? 0.9 : 0.85));
-      BOOST_TEST(double(H_in) / n <= 0.999);
+      // where the error is the bias of a large radius on a clean cloud, the
+      // bias term reads it at every point, and nearly every error is within
+      // two sigma (the manual: 99-100% at 16 spacings)
+      const bool sixteen_spacings = layer.neighborhood.kind() == CAS3::Neighborhood::SPACINGS
+                                    && layer.neighborhood.value() == 16;
+      BOOST_TEST(double(H_in) / n <= (noise == 0 && sixteen_spacings ? 0.9999 : 0.999));
       BOOST_TEST(double(K_in) / n >= 0.75);
       BOOST_TEST(ratio >= 0.5);
       BOOST_TEST(ratio <= 5);

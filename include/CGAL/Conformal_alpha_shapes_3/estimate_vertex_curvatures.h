@@ -57,10 +57,11 @@ struct Principal_curvatures_and_directions
 /// "Uncertainty"): one standard deviation of the error of `H`, of `K`, and
 /// of the normal's direction in degrees, from the fit's residuals, its
 /// neighbors' count and spread, the sample's noise and the bias that the
-/// radius implies; at a fixed radius the noise's part is widened for the
-/// residuals' few degrees of freedom, so that twice it covers the error as
-/// twice a known standard deviation would; NaN where unknown (the Euler
-/// estimators, undefined values).
+/// radius implies (its rate averaged over the vertices within 5 sample
+/// spacings, or 4.5 median edges); at a fixed radius the noise's part is
+/// widened for the residuals' few degrees of freedom, so that twice it
+/// covers the error as twice a known standard deviation would; NaN where
+/// unknown (the Euler estimators, undefined values).
 template <typename GT>
 struct Curvature_uncertainty
 {
@@ -372,7 +373,11 @@ std::size_t estimate_vertex_curvatures(const PolygonMesh& pmesh,
   std::vector<internal::Vertex_estimate> estimates(graph.size());
   internal::estimate_at_every_vertex<ConcurrencyTag>(
     graph, normals, rules, estimator, noise, 0, smoothing, internal::fit_center_keys(pmesh, vertex_index, graph, np),
-    [&](std::size_t, std::size_t v, const internal::Vertex_estimate& e) { estimates[v] = e; });
+    [&](std::size_t, std::size_t v, const internal::Vertex_estimate& e) { estimates[v] = e; },
+    [&](std::size_t, std::size_t v, const internal::Bias_widening& bias) {
+      internal::Vertex_estimate& e = estimates[v];
+      bias.widen(e.uncertainty.H, e.uncertainty.K, e.radius);
+    });
   std::size_t undefined = 0;
   for(vertex_descriptor v : vertices(pmesh))
   {
@@ -441,6 +446,10 @@ estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborh
     internal::fit_center_keys(pmesh, vertex_index, graph, np),
     [&](std::size_t r, std::size_t v, const internal::Vertex_estimate& e) {
       curvatures[r][v] = internal::to_vertex_curvature<GT>(e);
+    },
+    [&](std::size_t r, std::size_t v, const internal::Bias_widening& bias) {
+      Curvature_uncertainty<GT>& u = curvatures[r][v].uncertainty;
+      bias.widen(u.mean_curvature, u.gaussian_curvature, CGAL::to_double(curvatures[r][v].radius));
     });
   return curvatures;
 }
@@ -477,7 +486,12 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   const internal::Curvature_estimation estimation(graph, normals, rules, estimator, 0, 0, internal::Noise_smoothing(), nullptr);
   internal::Curvature_estimation::Workspace workspace = estimation.make_workspace();
   internal::Vertex_estimate estimate;
-  estimation.estimate(0, workspace, &estimate);
+  internal::Bias_rates rates;
+  estimation.estimate(0, workspace, &estimate, &rates);
+  internal::Bias_pool own;  // the vertex's own: its neighbors' need their searches
+  own.add(rates);
+  if(rule.radius > 0 || !rule.candidates.empty())
+    own.mean().widen(estimate.uncertainty.H, estimate.uncertainty.K, estimate.radius);
   typedef typename internal::Curvature_maps<PolygonMesh, NamedParameters>::GT GT;
   maps.write(v, internal::to_vertex_curvature<GT>(estimate));
   return estimate.defined();

@@ -139,25 +139,84 @@ constexpr double large_radius_per_center_spacing = 7;
 // The growth of the fits' bias with the radius at one vertex, from the fits
 // at several radii: H(r) = H0 + c r^2 and K(r) = K0 + c_K r^2, fitted by
 // least squares weighted by the fits' inverse variances. The fitted rate's
-// square overstates the true rate's by the rate's variance (the fits' noise);
-// less that variance it is the mean square of the bias, which the
-// uncertainty of a fixed radius takes. The automatic rule's takes the square
-// as it is: the radius it chose is where its own estimate of the error was
-// least, most often too small, which the variance stands for
-// (`choose_by_least_squared_error()`, which compares radii, takes it off).
+// square overstates the true rate's by the rate's variance (the fits'
+// noise); the excess is the square less that variance, whose mean over
+// vertices is the mean square of the true rate. At one vertex it is mostly
+// noise where the fits are noisy, and the fits' own errors move it (an
+// outlying fit at the radius tilts the line): the uncertainty takes its
+// mean over the vertices around (pool_bias_rates()).
 struct Bias_rates
 {
-  double squared_H = 0, squared_K = 0;    // c^2 and c_K^2 as fitted
-  double variance_H = 0, variance_K = 0;  // of c and c_K
+  double excess_H = std::numeric_limits<double>::quiet_NaN();  // c^2 less its variance; NaN: not fitted
+  double excess_K = std::numeric_limits<double>::quiet_NaN();
+};
 
-  Bias_rates less_variance() const
+// The bias rates' squares that an uncertainty adds at its radius, in
+// quadrature: the bias grows as r^2, its square as r^4.
+struct Bias_widening
+{
+  double squared_H = 0, squared_K = 0;
+
+  template <typename FT>
+  void widen(FT& sigma_H, FT& sigma_K, double radius) const
   {
-    Bias_rates r;
-    r.squared_H = (std::max)(0., squared_H - variance_H);
-    r.squared_K = (std::max)(0., squared_K - variance_K);
-    return r;
+    const double r4 = radius * radius * radius * radius, h = CGAL::to_double(sigma_H), k = CGAL::to_double(sigma_K);
+    sigma_H = FT(std::sqrt(h * h + squared_H * r4));
+    sigma_K = FT(std::sqrt(k * k + squared_K * r4));
   }
 };
+
+// The mean of some vertices' excesses (Bias_rates), never below 0.
+class Bias_pool
+{
+public:
+  void add(const Bias_rates& rates)
+  {
+    if(std::isfinite(rates.excess_H))
+    {
+      m_sum_H += rates.excess_H;
+      ++m_count_H;
+    }
+    if(std::isfinite(rates.excess_K))
+    {
+      m_sum_K += rates.excess_K;
+      ++m_count_K;
+    }
+  }
+
+  Bias_widening mean() const
+  {
+    Bias_widening w;
+    if(m_count_H > 0)
+      w.squared_H = (std::max)(0., m_sum_H / double(m_count_H));
+    if(m_count_K > 0)
+      w.squared_K = (std::max)(0., m_sum_K / double(m_count_K));
+    return w;
+  }
+
+private:
+  double m_sum_H = 0, m_sum_K = 0;
+  std::size_t m_count_H = 0, m_count_K = 0;
+};
+
+// The bias rates pooled at vertex v: the mean excess of v and the vertices
+// connected to it within `reach` (one radius) on the surface. A few
+// spacings keep where the bias is large, bumps a few times wider included.
+inline Bias_widening pool_bias_rates(const Vertex_graph& graph, const std::vector<Bias_rates>& rates, std::size_t v,
+                                     const std::vector<double>& reach, Nested_neighborhood_search& search)
+{
+  search.balls(graph, v, reach);
+  Bias_pool pool;
+  pool.add(rates[v]);
+  for(std::size_t k = 0; k < search.end(0); ++k)
+    pool.add(rates[search.vertices()[k]]);
+  return pool.mean();
+}
+
+// The reach of pool_bias_rates(): 5 spacings, as many as 4.5 median edges
+// of a uniform sample where the spacing is unknown.
+constexpr double bias_pooling_radius_in_spacings = 5;
+constexpr double bias_pooling_radius_in_edges = 4.5;
 
 // The standard deviation of the heights' noise that a fit sees: the
 // sample's (before smoothing) and its own residuals', together.
@@ -194,8 +253,7 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
       continue;
     const double c = line.slope();  // per (r / r_max)^2
     const double r4 = r_max * r_max * r_max * r_max;
-    (which == 0 ? rates.squared_H : rates.squared_K) = c * c / r4;
-    (which == 0 ? rates.variance_H : rates.variance_K) = line.w0 / line.determinant() / r4;
+    (which == 0 ? rates.excess_H : rates.excess_K) = (c * c - line.w0 / line.determinant()) / r4;
   }
   return rates;
 }
@@ -259,8 +317,8 @@ inline double smoothed_noise_share(double radius, const Noise_smoothing& smoothi
   return share;
 }
 
-// The uncertainty of a fit at radius `radius` whose bias grows at `rates`,
-// the noise's and the bias's added in quadrature. The noise is the
+// The uncertainty of a fit at radius `radius` due to the noise, to which
+// Bias_widening adds the bias's in quadrature. The noise is the
 // sample's, `sample_noise`, as smoothed_noise_share() says a fit sees it,
 // and the residuals' beyond it: on points that were not smoothed the
 // residuals hold the sample's noise, and only their excess over it (what
@@ -272,9 +330,8 @@ inline double smoothed_noise_share(double radius, const Noise_smoothing& smoothi
 // estimated from the fit's few): a 2-spacing fit has about three, and its
 // errors over a residual standard deviation have the long tails of
 // Student's t.
-inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, const Bias_rates& rates,
-                                            double sample_noise, const Noise_smoothing& smoothing,
-                                            Residual_degrees residual_degrees)
+inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double radius, double sample_noise,
+                                            const Noise_smoothing& smoothing, Residual_degrees residual_degrees)
 {
   Estimate_uncertainty u;
   if(!(e.per_noise > 0))
@@ -288,15 +345,14 @@ inline Estimate_uncertainty fit_uncertainty(const Quadric_fit_error& e, double r
     const double share = noise * noise / residual;  // the whole variance over the residuals' part
     noise *= t_coverage_factor(e.degrees_of_freedom * share * share);
   }
-  const double r4 = radius * radius * radius * radius;
   const double se_H = noise * e.per_noise;
   // the first-order variance of K read with the fitted coefficients
   // overstates it by twice its second-order part, which it counts once
   const double second = noise * noise * e.per_squared_noise_K, first = noise * e.per_noise_K;
   const double se_K = std::sqrt((std::max)(first * first - second * second, second * second));
-  u.H = std::sqrt(se_H * se_H + rates.squared_H * r4);
+  u.H = se_H;
   u.H_noise = se_H;
-  u.K = std::sqrt(se_K * se_K + rates.squared_K * r4);
+  u.K = se_K;
   u.normal = noise * e.per_noise_normal;
   return u;
 }
@@ -402,6 +458,10 @@ public:
     // reports its uncertainty
     m_with_error.assign(m_radii.size(), 1);
 
+    if(!m_radii.empty())
+      m_bias_pooling_radius = sample_spacing > 0 ? bias_pooling_radius_in_spacings * sample_spacing
+                                                 : bias_pooling_radius_in_edges * median_edge_length(graph);
+
     m_fine_levels = m_radii.size();
     const bool at_centers = center_keys && estimator == QUADRIC_FIT && !m_radii.empty();
     const double large = !at_centers ? 0.
@@ -454,8 +514,17 @@ public:
 
   Workspace make_workspace() const { return Workspace(m_graph.size()); }
 
-  // The estimates at vertex v, one per rule, into out[0, rules.size()).
-  void estimate(std::size_t v, Workspace& ws, Vertex_estimate* out) const
+  // Whether the rules fit balls, whose estimates' uncertainty adds a bias
+  // (Bias_widening) to what estimate() gives.
+  bool fits_balls() const { return !m_radii.empty(); }
+
+  // The length within which pool_bias_rates() averages.
+  double bias_pooling_radius() const { return m_bias_pooling_radius; }
+
+  // The estimates at vertex v, one per rule, into out[0, rules.size()),
+  // their uncertainty the noise's only; the bias rates of the fits at v
+  // into `rates` if given.
+  void estimate(std::size_t v, Workspace& ws, Vertex_estimate* out, Bias_rates* rates = nullptr) const
   {
     for(std::size_t r = 0; r < m_rules.size(); ++r)
       out[r] = Vertex_estimate();
@@ -465,7 +534,7 @@ public:
     for(std::size_t r = 0; r < m_rules.size(); ++r)
       out[r].curvature.normal = n;
     if(!m_radii.empty())
-      estimate_in_balls(v, ws, out);
+      estimate_in_balls(v, ws, out, rates);
     if(m_rings > 0)
       estimate_in_rings(v, ws, out);
   }
@@ -669,7 +738,7 @@ private:
     return true;
   }
 
-  void estimate_in_balls(std::size_t v, Workspace& ws, Vertex_estimate* out) const
+  void estimate_in_balls(std::size_t v, Workspace& ws, Vertex_estimate* out, Bias_rates* rates) const
   {
     const Tangent_frame f = frame_from_normal(m_normals[v]);
     std::vector<Level_end> ends;
@@ -713,7 +782,8 @@ private:
                                          q.curvature.k1 * q.curvature.k2, noise * q.error.per_noise,
                                          noise * q.error.per_noise_K});
     }
-    const Bias_rates rates = bias_rates(ws.samples), fixed_rates = rates.less_variance();
+    if(rates)
+      *rates = bias_rates(ws.samples);
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
     {
@@ -729,7 +799,7 @@ private:
           // values would be within two sigma at 99% of the points
           out[r] = Vertex_estimate{chosen.curvature, chosen.radius,
                                    choice_uncertainty(ws.candidates, chosen,
-                                     fit_uncertainty(chosen.error, chosen.radius, rates, m_sample_noise, m_smoothing,
+                                     fit_uncertainty(chosen.error, chosen.radius, m_sample_noise, m_smoothing,
                                                      Residual_degrees::IGNORED))};
         }
       }
@@ -738,7 +808,7 @@ private:
         const Radius_fit& q = ws.fits[radius_level(rule.radius)];
         if(q.defined)
           out[r] = Vertex_estimate{q.curvature, rule.radius,
-                                   fit_uncertainty(q.error, rule.radius, fixed_rates, m_sample_noise, m_smoothing,
+                                   fit_uncertainty(q.error, rule.radius, m_sample_noise, m_smoothing,
                                                    Residual_degrees::COUNTED)};
         else
           to_widen.push_back(r);
@@ -757,7 +827,7 @@ private:
         Radius_fit q;
         fit(f, ends[0], radius, radius, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, fixed_rates, m_sample_noise, m_smoothing,
+          out[r] = Vertex_estimate{q.curvature, radius, fit_uncertainty(q.error, radius, m_sample_noise, m_smoothing,
                                                                         Residual_degrees::COUNTED)};
       }
   }
@@ -793,8 +863,8 @@ private:
         Radius_fit q;
         fit(f, ends[ring], reach, length, ws, true, q);
         if(q.defined)
-          out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, Bias_rates(), m_sample_noise,
-                                                                       m_smoothing, Residual_degrees::COUNTED)};
+          out[r] = Vertex_estimate{q.curvature, reach, fit_uncertainty(q.error, reach, m_sample_noise, m_smoothing,
+                                                                       Residual_degrees::COUNTED)};
       }
     }
   }
@@ -804,6 +874,7 @@ private:
   std::vector<Neighborhood_rule> m_rules;
   Curvature_estimator m_estimator;
   double m_sample_noise;           // of the points before any denoising, model units; 0 when unknown
+  double m_bias_pooling_radius = 0;
   Noise_smoothing m_smoothing;     // see fit_uncertainty()
   std::vector<double> m_radii;     // every rule's radii, increasing
   std::vector<char> m_with_error;  // by radius: whether its fits compute their error
@@ -822,12 +893,14 @@ private:
   std::unique_ptr<std::atomic<std::uint32_t>[]> m_center_state;
 };
 
-// estimate_at_every_vertex() of rules that share one pass.
-template <typename ConcurrencyTag, typename Write>
+// estimate_at_every_vertex() of rules that share one pass: the estimates
+// first, then their uncertainty widened by the bias rates pooled around
+// each vertex, which needs every vertex's own.
+template <typename ConcurrencyTag, typename Write, typename Widen>
 void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                           const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
                           double sample_noise, double sample_spacing, const Noise_smoothing& smoothing,
-                          const std::vector<std::uint64_t>& center_keys, Write write)
+                          const std::vector<std::uint64_t>& center_keys, Write write, Widen widen)
 {
   Curvature_estimation estimation(graph, normals, rules, estimator, sample_noise, sample_spacing, smoothing,
                                   &center_keys);
@@ -837,28 +910,41 @@ void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& no
     Workspace workspace;
     std::vector<Vertex_estimate> estimates;
   };
+  std::vector<Bias_rates> rates(estimation.fits_balls() ? graph.size() : 0);
   for_each_index<ConcurrencyTag>(graph.size(),
     [&]() { return Per_thread{estimation.make_workspace(), std::vector<Vertex_estimate>(rules.size())}; },
     [&](std::size_t v, Per_thread& thread) {
-      estimation.estimate(v, thread.workspace, thread.estimates.data());
+      estimation.estimate(v, thread.workspace, thread.estimates.data(), rates.empty() ? nullptr : &rates[v]);
       for(std::size_t r = 0; r < rules.size(); ++r)
         write(r, v, thread.estimates[r]);
+    });
+  if(rates.empty())
+    return;
+  const std::vector<double> reach(1, estimation.bias_pooling_radius());
+  for_each_index<ConcurrencyTag>(graph.size(), [&]() { return Nested_neighborhood_search(graph.size()); },
+    [&](std::size_t v, Nested_neighborhood_search& search) {
+      const Bias_widening bias = pool_bias_rates(graph, rates, v, reach, search);
+      for(std::size_t r = 0; r < rules.size(); ++r)
+        if(rules[r].radius > 0 || !rules[r].candidates.empty())
+          widen(r, v, bias);
     });
 }
 
 // Estimates of every rule at every vertex of `graph`, each handed to
 // `write(rule, vertex index, estimate)` once, from TBB's threads as the tag
 // says: the callers keep them in their own form, without a copy of every
-// layer in this one.
+// layer in this one. Once every vertex is written, `widen(rule, vertex
+// index, bias)` asks for the uncertainty of the estimates in balls to be
+// widened by `bias` (Bias_widening::widen()).
 // The rules share one pass (one search per vertex) where that leaves the
 // automatic rules' values as they are alone: the fits at the candidate
 // radii sum the same shells in the same units with the fixed radii among
 // the candidates, not with others, which then get a pass of their own.
-template <typename ConcurrencyTag, typename Write>
+template <typename ConcurrencyTag, typename Write, typename Widen>
 void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>& normals,
                               const std::vector<Neighborhood_rule>& rules, Curvature_estimator estimator,
                               double sample_noise, double sample_spacing, const Noise_smoothing& smoothing,
-                              const std::vector<std::uint64_t>& center_keys, Write write)
+                              const std::vector<std::uint64_t>& center_keys, Write write, Widen widen)
 {
   std::vector<double> candidates;
   for(const Neighborhood_rule& rule : rules)
@@ -878,8 +964,12 @@ void estimate_at_every_vertex(const Vertex_graph& graph, const std::vector<Vec3>
     for(std::size_t r : *pass)
       pass_rules.push_back(rules[r]);
     estimate_in_one_pass<ConcurrencyTag>(graph, normals, pass_rules, estimator, sample_noise, sample_spacing,
-                                         smoothing, center_keys, [&](std::size_t k, std::size_t v, const Vertex_estimate& e) {
+                                         smoothing, center_keys,
+                                         [&](std::size_t k, std::size_t v, const Vertex_estimate& e) {
                                            write((*pass)[k], v, e);
+                                         },
+                                         [&](std::size_t k, std::size_t v, const Bias_widening& bias) {
+                                           widen((*pass)[k], v, bias);
                                          });
   }
 }
