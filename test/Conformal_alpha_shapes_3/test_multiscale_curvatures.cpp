@@ -798,11 +798,13 @@ BOOST_AUTO_TEST_CASE(uncertainties_are_calibrated)
                                 && layer.neighborhood.value() == 2;
       BOOST_TEST(double(H_in) / n >= (noise > 0 ? 0.75 : two_spacings ? 0.9 : 0.85));
       // where the error is the bias of a large radius on a clean cloud, the
-      // bias term reads it at every point, and nearly every error is within
-      // two sigma (the manual: 99-100% at 16 spacings)
+      // bias term reads it at every point, and every error may be within two
+      // sigma (the manual: 99-100% at 16 spacings; 100% at 2,500 points, where
+      // 16 spacings span most of the ellipsoid); the ratio bounds it
       const bool sixteen_spacings = layer.neighborhood.kind() == CAS3::Neighborhood::SPACINGS
                                     && layer.neighborhood.value() == 16;
-      BOOST_TEST(double(H_in) / n <= (noise == 0 && sixteen_spacings ? 0.9999 : 0.999));
+      if(!(noise == 0 && sixteen_spacings))
+        BOOST_TEST(double(H_in) / n <= 0.999);
       BOOST_TEST(double(K_in) / n >= 0.75);
       BOOST_TEST(ratio >= 0.5);
       BOOST_TEST(ratio <= 5);

@@ -459,7 +459,9 @@ estimate_vertex_curvatures(const PolygonMesh& pmesh, const std::vector<Neighborh
 The same estimate at the single vertex `v`, written into the maps passed in
 `np` at `v` only. Its cost is that of the vertex's neighborhood. Large
 radii are fitted at `v` itself, not interpolated from centers: for them
-the value differs slightly from the whole mesh's.
+the value differs slightly from the whole mesh's. The uncertainty's bias
+part is `v`'s own bias rate, not its mean over the vertices around (which
+would need their fits).
 \returns whether the curvature at `v` is defined.
 */
 template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
