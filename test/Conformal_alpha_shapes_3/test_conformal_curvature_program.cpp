@@ -237,8 +237,9 @@ BOOST_AUTO_TEST_CASE(noisy_ellipsoid_at_the_automatic_scale)
 // 20,000 points: on fewer the same noise in spacings is smaller beside the
 // curvature, so the sanitized build checks the clean sample only, at 4,000
 // points, where 16 spacings are two thirds of the ellipsoid's longest
-// half-axis: that layer's values err by 21% (median), and its summary rightly
-// says bias-dominated.
+// half-axis: that layer summarizes a large part of the surface (on
+// evaluate_surfaces' 4,000-point ellipsoid its median error is 21%), and its
+// summary rightly says bias-dominated.
 BOOST_AUTO_TEST_CASE(the_summary_names_the_noise_dominated_layers)
 {
 #ifdef CAS3_SANITIZED
