@@ -983,25 +983,57 @@ BOOST_AUTO_TEST_CASE(fixed_radius_uncertainty_widens_for_few_residual_degrees)
   BOOST_TEST(known.H == 0.1 * 10, boost::test_tools::tolerance(1e-12));
 }
 
-// The bias rate fitted over the radii, H(r) = H0 + c r^2: its square less
-// its variance (1 / sum w (x - mean x)^2, x = r^2, for weights w = 1 / se^2),
-// negative where the rate is below its noise.
-BOOST_AUTO_TEST_CASE(bias_rate_squares_less_their_variance)
+// The bias rates fitted over the radii in x = (r / reference)^2, the
+// coefficients' products less their covariance. With fits at every radius
+// (noise they share) each change from one radius to the next larger is
+// weighed by its own variance, the smaller fit's less the larger's, and a
+// parabola is fitted as well; with a few fits (a clean sample's settled
+// choice) the line alone, each fit weighed by its inverse variance.
+BOOST_AUTO_TEST_CASE(bias_rates_weigh_the_changes_between_nested_fits)
 {
   namespace I = CGAL::Conformal_alpha_shapes_3::internal;
-  std::vector<I::Radius_sample> samples;
-  for(double r : {1., 2., 3.})
-    samples.push_back(I::Radius_sample{r, 1 + 0.5 * r * r, 0, 0.1, 0.1});
-  const I::Bias_rates rates = I::bias_rates(samples);
-  const double variance = 1 / (100 * ((11. / 3) * (11. / 3) + (2. / 3) * (2. / 3) + (13. / 3) * (13. / 3)));
-  BOOST_TEST(rates.excess_H == 0.25 - variance, boost::test_tools::tolerance(1e-9));
-  BOOST_TEST(rates.excess_K == -variance, boost::test_tools::tolerance(1e-9));  // K constant: no rate
-  BOOST_TEST(std::isnan(I::bias_rates(std::vector<I::Radius_sample>(1, samples[0])).excess_H));
+  // a line through two fits, H = 1 + 0.5 x: c = 0.5 exactly, its variance
+  // the change's, (0.2^2 - 0.1^2) / 0.75^2, or the two fits' as if
+  // independent, (0.2^2 + 0.1^2) / 0.75^2
+  const std::vector<I::Radius_sample> two = {I::Radius_sample{1, 1.125, 2, 0.2, 0.2},
+                                             I::Radius_sample{2, 1.5, 2, 0.1, 0.1}};
+  const I::Bias_rates nested = I::bias_rates(two, 2, true);
+  BOOST_TEST(nested.H.line == 0.25 - 0.03 / 0.5625, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(nested.K.line == -0.03 / 0.5625, boost::test_tools::tolerance(1e-12));  // K constant: no rate
+  BOOST_TEST(std::isnan(nested.H.parabola[0]));  // two fits: no parabola
+  BOOST_TEST(I::bias_rates(two, 2, false).H.line == 0.25 - 0.05 / 0.5625, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(std::isnan(I::bias_rates(std::vector<I::Radius_sample>(1, two[0]), 2, true).H.line));
+
+  // a parabola through three fits, H = 1 + 0.5 x + 0.25 x^2 at x = 1/4,
+  // 9/16, 1: its coefficients exactly, their covariance that of the changes
+  // (variances 0.09 - 0.04 and 0.04 - 0.01) and the largest fit's (0.01);
+  // with the fits taken as independent the variance of d would be 3.87
+  std::vector<I::Radius_sample> three;
+  const double se[3] = {0.3, 0.2, 0.1};
+  for(int i = 0; i < 3; ++i)
+  {
+    const double r = 0.5 + 0.25 * i, x = r * r;
+    three.push_back(I::Radius_sample{r, 1 + 0.5 * x + 0.25 * x * x, 0, se[i], se[i]});
+  }
+  const I::Bias_rates bent = I::bias_rates(three, 1, true);
+  BOOST_TEST(bent.H.parabola[3] == 1.1888616780045143, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(bent.H.parabola[2] == 0.0625 - 1.1888616780045143, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(bent.H.parabola[1] == 0.125 + 1.6486167800453226, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(bent.H.parabola[0] == 0.25 - 2.406167800453475, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(std::isnan(I::bias_rates(three, 1, false).H.parabola[0]));  // a few fits: no parabola
+
+  // uncertainties that do not fall with the radius: each change keeps a
+  // twentieth of its fit's variance, not none
+  for(I::Radius_sample& q : three)
+    q.se_H = 0.1;
+  BOOST_TEST(I::bias_rates(three, 1, true).H.parabola[3] == 0.013746213151927459, boost::test_tools::tolerance(1e-9));
 }
 
-// The bias that an uncertainty adds is the mean of the excesses of the
-// vertex and of those connected to it within the pooling radius, never
-// below 0, in quadrature with the noise's: sigma^2 + c^2 r^4.
+// The bias that an uncertainty adds is the mean of the moments of the
+// vertex and of those connected to it within the pooling radius, read at
+// the estimate's radius as the line's, or the parabola's where that is
+// larger, its bend stands out of its noise and the radius is at least half
+// the largest, never below 0, in quadrature with the noise's.
 BOOST_AUTO_TEST_CASE(bias_rates_are_pooled_over_the_vertices_around)
 {
   namespace I = CGAL::Conformal_alpha_shapes_3::internal;
@@ -1011,20 +1043,33 @@ BOOST_AUTO_TEST_CASE(bias_rates_are_pooled_over_the_vertices_around)
   path.first = {0, 1, 3, 5, 6};
   path.adjacent = {1, 0, 2, 1, 3, 2};
   std::vector<I::Bias_rates> rates(4);
-  rates[0].excess_H = 4;
-  rates[1].excess_H = -1;
-  rates[2].excess_H = 3;  // vertex 3 has none
-  rates[1].excess_K = -2;
+  rates[0].H.line = 4;
+  rates[1].H.line = -1;
+  rates[2].H.line = 3;  // vertex 3 has none
+  rates[1].K.line = -2;
+  rates[2].H.parabola = {0.5, 2, 3, 1};  // alone among the vertices around 1; d^2 3 above its variance 1
   I::Nested_neighborhood_search search(4);
-  const I::Bias_widening at_1 = I::pool_bias_rates(path, rates, 1, std::vector<double>(1, 1.5), search);
-  BOOST_TEST(at_1.squared_H == 2.);  // (4 - 1 + 3) / 3
-  BOOST_TEST(at_1.squared_K == 0.);  // negative mean: no bias
-  const I::Bias_widening at_3 = I::pool_bias_rates(path, rates, 3, std::vector<double>(1, 0.5), search);
-  BOOST_TEST(at_3.squared_H == 0.);  // none within reach
+  const I::Bias_widening at_1 = I::pool_bias_rates(path, rates, 1, std::vector<double>(1, 1.5), 2, search);
+  BOOST_TEST(at_1.H.line == 2.);  // (4 - 1 + 3) / 3
+  BOOST_TEST(at_1.H.parabola[2] == 3.);
+  BOOST_TEST(at_1.K.squared_bias(1) == 0.);  // negative mean: no bias
+  const I::Bias_widening at_3 = I::pool_bias_rates(path, rates, 3, std::vector<double>(1, 0.5), 2, search);
+  BOOST_TEST(at_3.H.squared_bias(1) == 0.);  // none within reach
   double sigma_H = 3, sigma_K = 1;
-  at_1.widen(sigma_H, sigma_K, 2.);
-  BOOST_TEST(sigma_H == std::sqrt(9. + 2 * 16), boost::test_tools::tolerance(1e-12));
+  at_1.widen(sigma_H, sigma_K, 2.);  // x = 1: the parabola's 0.5 + 4 + 3, above the line's 2
+  BOOST_TEST(sigma_H == std::sqrt(9. + 7.5), boost::test_tools::tolerance(1e-12));
   BOOST_TEST(sigma_K == 1.);
+  sigma_H = 3;
+  at_1.widen(sigma_H, sigma_K, 1.);  // x = 1/4: the line's 2 / 16, above the parabola's (0.5 + 1 + 3 / 16) / 16
+  BOOST_TEST(sigma_H == std::sqrt(9. + 2. / 16), boost::test_tools::tolerance(1e-12));
+  I::Bias_moments noisy_bend = at_1.H;
+  noisy_bend.parabola[3] = 4;  // d^2 3 within its variance: the line
+  BOOST_TEST(noisy_bend.squared_bias(1) == 2.);
+  I::Bias_moments small = I::Bias_moments();  // a parabola alone, read from half the largest radius on
+  small.line = 0;
+  small.parabola = {1, 0, 0.5, 0};
+  BOOST_TEST(small.squared_bias(0.2) == 0.);
+  BOOST_TEST(small.squared_bias(0.25) == 0.0625 * (1 + 0.25 * 0.25 * 0.5), boost::test_tools::tolerance(1e-12));
 }
 
 // The residuals of a fit to points that were not smoothed hold the

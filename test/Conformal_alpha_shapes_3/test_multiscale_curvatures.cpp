@@ -797,17 +797,24 @@ BOOST_AUTO_TEST_CASE(uncertainties_are_calibrated)
       const bool two_spacings = layer.neighborhood.kind() == CAS3::Neighborhood::SPACINGS
                                 && layer.neighborhood.value() == 2;
       BOOST_TEST(double(H_in) / n >= (noise > 0 ? 0.75 : two_spacings ? 0.9 : 0.85));
-      // where the error is the bias of a large radius on a clean cloud, the
-      // bias term reads it at every point, and every error may be within two
-      // sigma (the manual: 99-100% at 16 spacings; 100% at 2,500 points, where
-      // 16 spacings span most of the ellipsoid); the ratio bounds it
+      // not all of them, where the error is mostly noise (the 2- and 4-spacing
+      // layers) or the clean cloud's below 16 spacings; where it is mostly the
+      // bias of a large radius, the bias term reads it at nearly every point
+      // (the manual: 99-100% at 16 spacings on clean clouds), and on a cloud
+      // this small, where 16 spacings span much of the ellipsoid, it
+      // overstates it under noise (the manual, small clouds); the ratio
+      // bounds them
+      const bool fine = layer.neighborhood.kind() == CAS3::Neighborhood::SPACINGS
+                        && layer.neighborhood.value() <= 4;
       const bool sixteen_spacings = layer.neighborhood.kind() == CAS3::Neighborhood::SPACINGS
                                     && layer.neighborhood.value() == 16;
-      if(!(noise == 0 && sixteen_spacings))
+      if(fine || (noise == 0 && !sixteen_spacings))
         BOOST_TEST(double(H_in) / n <= 0.999);
       BOOST_TEST(double(K_in) / n >= 0.75);
       BOOST_TEST(ratio >= 0.5);
-      BOOST_TEST(ratio <= 5);
+      // on 2,500 points under noise the automatic and 8-spacing layers'
+      // sigma is 4-5 times their error (the manual, small clouds)
+      BOOST_TEST(ratio <= 6);
     }
   }
 }

@@ -493,7 +493,7 @@ bool estimate_vertex_curvatures(typename internal::Vertex_of<PolygonMesh>::type 
   internal::Bias_pool own;  // the vertex's own: its neighbors' need their searches
   own.add(rates);
   if(rule.radius > 0 || !rule.candidates.empty())
-    own.mean().widen(estimate.uncertainty.H, estimate.uncertainty.K, estimate.radius);
+    own.mean(estimation.bias_reference_radius()).widen(estimate.uncertainty.H, estimate.uncertainty.K, estimate.radius);
   typedef typename internal::Curvature_maps<PolygonMesh, NamedParameters>::GT GT;
   maps.write(v, internal::to_vertex_curvature<GT>(estimate));
   return estimate.defined();

@@ -136,81 +136,134 @@ constexpr double large_radius_in_edges = 10.5;
 constexpr double large_radius_in_spacings = 12;
 constexpr double large_radius_per_center_spacing = 7;
 
-// The growth of the fits' bias with the radius at one vertex, from the fits
-// at several radii: H(r) = H0 + c r^2 and K(r) = K0 + c_K r^2, fitted by
-// least squares weighted by the fits' inverse variances. The fitted rate's
-// square overstates the true rate's by the rate's variance (the fits'
-// noise); the excess is the square less that variance, whose mean over
-// vertices is the mean square of the true rate. At one vertex it is mostly
-// noise where the fits are noisy, and the fits' own errors move it (an
-// outlying fit at the radius tilts the line): the uncertainty takes its
-// mean over the vertices around (pool_bias_rates()).
-struct Bias_rates
+// The growth of the fits' bias with the radius at one vertex, from its fits
+// at several radii, in x = (r / reference)^2 with one reference radius for
+// every vertex: read as a line, H(r) = H0 + c x, and as a parabola,
+// H(r) = H0 + c x + d x^2, which follows a bias that bends at large radii
+// (bumps as wide as the radius) where the line, weighted towards the large
+// radii on noisy points, reads the flatter part. The products of the
+// fitted coefficients overstate the true ones' by their covariance (the
+// fits' noise); a Bias_moments keeps them less that covariance, whose mean
+// over vertices is the mean of the true products. At one vertex they are
+// mostly noise where the fits are noisy, and the fits' own errors move them
+// (an outlying fit at the radius tilts the line): the uncertainty takes
+// their mean over the vertices around (pool_bias_rates()).
+struct Bias_moments
 {
-  double excess_H = std::numeric_limits<double>::quiet_NaN();  // c^2 less its variance; NaN: not fitted
-  double excess_K = std::numeric_limits<double>::quiet_NaN();
+  static constexpr double undefined = std::numeric_limits<double>::quiet_NaN();
+  double line = undefined;  // c^2 less its variance; NaN: not fitted
+  // c^2, c d, d^2, each less its covariance, and the variance of d; NaN: not fitted
+  std::array<double, 4> parabola = {undefined, undefined, undefined, undefined};
+
+  // The bias's square at x, never below 0: the line's, or the parabola's
+  // where that is larger, its bend stands out of its noise (d^2 above its
+  // variance) and the radius is at least half the largest (x >= 1/4),
+  // where the bend was measured. A noisy bend would only widen the smooth
+  // surfaces' uncertainty; below half the largest radius a bend at the
+  // largest ones (a ball that spans much of a small cloud) steepens the
+  // parabola's slope beyond the bias; and where the curvature varies at the
+  // scale of the sampling neither model holds, and the parabola can bend
+  // away from a bias that the line reads.
+  double squared_bias(double x) const
+  {
+    const double x2 = x * x;
+    double bias2 = line * x2;
+    if(parabola[2] > parabola[3] && x >= 0.25)
+      bias2 = (std::max)(bias2, x2 * (parabola[0] + x * (2 * parabola[1] + x * parabola[2])));
+    return (std::max)(0., bias2);
+  }
 };
 
-// The bias rates' squares that an uncertainty adds at its radius, in
-// quadrature: the bias grows as r^2, its square as r^4.
+struct Bias_rates
+{
+  Bias_moments H, K;
+};
+
+// The bias that an uncertainty adds at its radius, in quadrature.
 struct Bias_widening
 {
-  double squared_H = 0, squared_K = 0;
+  Bias_moments H, K;  // pooled: never NaN
+  double reference = 1;
 
   template <typename FT>
   void widen(FT& sigma_H, FT& sigma_K, double radius) const
   {
-    const double r4 = radius * radius * radius * radius, h = CGAL::to_double(sigma_H), k = CGAL::to_double(sigma_K);
-    sigma_H = FT(std::sqrt(h * h + squared_H * r4));
-    sigma_K = FT(std::sqrt(k * k + squared_K * r4));
+    const double x = (radius / reference) * (radius / reference);
+    const double h = CGAL::to_double(sigma_H), k = CGAL::to_double(sigma_K);
+    sigma_H = FT(std::sqrt(h * h + H.squared_bias(x)));
+    sigma_K = FT(std::sqrt(k * k + K.squared_bias(x)));
   }
 };
 
-// The mean of some vertices' excesses (Bias_rates), never below 0.
+// The mean of some vertices' Bias_rates, each moment over the vertices
+// that have it.
 class Bias_pool
 {
 public:
   void add(const Bias_rates& rates)
   {
-    if(std::isfinite(rates.excess_H))
-    {
-      m_sum_H += rates.excess_H;
-      ++m_count_H;
-    }
-    if(std::isfinite(rates.excess_K))
-    {
-      m_sum_K += rates.excess_K;
-      ++m_count_K;
-    }
+    add(rates.H, m_H);
+    add(rates.K, m_K);
   }
 
-  Bias_widening mean() const
+  Bias_widening mean(double reference) const
   {
     Bias_widening w;
-    if(m_count_H > 0)
-      w.squared_H = (std::max)(0., m_sum_H / double(m_count_H));
-    if(m_count_K > 0)
-      w.squared_K = (std::max)(0., m_sum_K / double(m_count_K));
+    w.H = mean(m_H);
+    w.K = mean(m_K);
+    w.reference = reference;
     return w;
   }
 
 private:
-  double m_sum_H = 0, m_sum_K = 0;
-  std::size_t m_count_H = 0, m_count_K = 0;
+  struct Sums
+  {
+    double line = 0;
+    std::array<double, 4> parabola = {0, 0, 0, 0};
+    std::size_t lines = 0, parabolas = 0;
+  };
+
+  static void add(const Bias_moments& m, Sums& sums)
+  {
+    if(std::isfinite(m.line))
+    {
+      sums.line += m.line;
+      ++sums.lines;
+    }
+    if(std::isfinite(m.parabola[0]))
+    {
+      for(int i = 0; i < 4; ++i)
+        sums.parabola[i] += m.parabola[i];
+      ++sums.parabolas;
+    }
+  }
+
+  static Bias_moments mean(const Sums& sums)
+  {
+    Bias_moments m;
+    m.line = sums.lines > 0 ? sums.line / double(sums.lines) : 0;
+    for(int i = 0; i < 4; ++i)
+      m.parabola[i] = sums.parabolas > 0 ? sums.parabola[i] / double(sums.parabolas) : 0;
+    return m;
+  }
+
+  Sums m_H, m_K;
 };
 
-// The bias rates pooled at vertex v: the mean excess of v and the vertices
-// connected to it within `reach` (one radius) on the surface. A few
-// spacings keep where the bias is large, bumps a few times wider included.
+// The bias rates pooled at vertex v: the mean of the rates of v and the
+// vertices connected to it within `reach` (one radius) on the surface. A
+// few spacings keep where the bias is large, bumps a few times wider
+// included.
 inline Bias_widening pool_bias_rates(const Vertex_graph& graph, const std::vector<Bias_rates>& rates, std::size_t v,
-                                     const std::vector<double>& reach, Nested_neighborhood_search& search)
+                                     const std::vector<double>& reach, double reference,
+                                     Nested_neighborhood_search& search)
 {
   search.balls(graph, v, reach);
   Bias_pool pool;
   pool.add(rates[v]);
   for(std::size_t k = 0; k < search.end(0); ++k)
     pool.add(rates[search.vertices()[k]]);
-  return pool.mean();
+  return pool.mean(reference);
 }
 
 // The reach of pool_bias_rates(): 5 spacings, as many as 4.5 median edges
@@ -218,42 +271,141 @@ inline Bias_widening pool_bias_rates(const Vertex_graph& graph, const std::vecto
 constexpr double bias_pooling_radius_in_spacings = 5;
 constexpr double bias_pooling_radius_in_edges = 4.5;
 
-// The standard deviation of the heights' noise that a fit sees: the
-// sample's (before smoothing) and its own residuals', together.
-inline double fit_noise(const Quadric_fit_error& e, double sample_noise)
-{
-  return std::sqrt(sample_noise * sample_noise + e.noise * e.noise);
-}
-
-// A fit's curvature and radius for bias_rates().
+// A fit's curvature, radius and the standard uncertainty of its curvature
+// due to the noise, for bias_rates().
 struct Radius_sample
 {
   double radius, H, K, se_H, se_K;
 };
 
-inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples)
+// Weighted least squares in the basis (1, x, x^2) or its first two terms,
+// its normal equations summed one observation at a time.
+template <int n>
+class Weighted_polynomial_fit
 {
+public:
+  void add(const std::array<double, n>& basis, double y, double w)
+  {
+    for(int i = 0; i < n; ++i)
+    {
+      m_b[i] += w * basis[i] * y;
+      for(int j = 0; j < n; ++j)
+        m_a[i][j] += w * basis[i] * basis[j];
+    }
+  }
+
+  // The coefficients and their covariance (the inverse of the normal
+  // equations); false where these are singular.
+  bool solve(std::array<double, n>& coefficient, double covariance[n][n]) const
+  {
+    if(!invert(covariance))
+      return false;
+    for(int i = 0; i < n; ++i)
+    {
+      coefficient[std::size_t(i)] = 0;
+      for(int j = 0; j < n; ++j)
+        coefficient[std::size_t(i)] += covariance[i][j] * m_b[j];
+    }
+    return true;
+  }
+
+private:
+  bool invert(double inverse[n][n]) const
+  {
+    double scale = 1;
+    for(int i = 0; i < n; ++i)
+      scale *= m_a[i][i];
+    if constexpr(n == 2)
+    {
+      const double det = m_a[0][0] * m_a[1][1] - m_a[0][1] * m_a[1][0];
+      if(!(det > 1e-12 * scale))
+        return false;
+      inverse[0][0] = m_a[1][1] / det;
+      inverse[1][1] = m_a[0][0] / det;
+      inverse[0][1] = inverse[1][0] = -m_a[0][1] / det;
+      return true;
+    }
+    // the adjugate over the determinant
+    const auto& a = m_a;
+    double cofactor[n][n];
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+      {
+        const int i1 = (i + 1) % n, i2 = (i + 2) % n, j1 = (j + 1) % n, j2 = (j + 2) % n;
+        cofactor[i][j] = a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1];
+      }
+    double det = 0;
+    for(int j = 0; j < n; ++j)
+      det += a[0][j] * cofactor[0][j];
+    if(!(det > 1e-12 * scale))
+      return false;
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+        inverse[i][j] = cofactor[j][i] / det;
+    return true;
+  }
+
+  double m_a[n][n] = {};
+  double m_b[n] = {};
+};
+
+// The bias rates at one vertex from its fits at increasing radii. Under
+// noise the fits at nested radii share their neighbors, so that a larger
+// fit's noise is part of each smaller one's: their errors are those of
+// independent increments, and the least squares weigh each change from one
+// radius to the next larger by its own variance (the smaller fit's less the
+// larger's, at least a twentieth of the smaller's where the uncertainties
+// do not fall with the radius), the largest fit by its whole variance.
+// That needs `every_radius`, the fits at all the radii of the call: where
+// an automatic choice settled early (a clean sample) the few fits err by
+// what the quadric misses, not by noise they share, and the line alone is
+// fitted, each fit weighed by its inverse variance (a parabola through
+// them bends with their errors).
+inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples, double reference, bool every_radius)
+{
+  constexpr double least_variance_share = 0.05;
   Bias_rates rates;
-  if(samples.size() < 2)
-    return rates;
-  double r_max = 0;
-  for(const Radius_sample& q : samples)
-    r_max = (std::max)(r_max, q.radius);
   for(int which = 0; which < 2; ++which)
   {
-    Weighted_line_fit line;
-    for(const Radius_sample& q : samples)
+    Weighted_polynomial_fit<2> line;
+    Weighted_polynomial_fit<3> parabola;
+    int count = 0;
+    double larger_x = 0, larger_value = 0, larger_variance = 0;
+    for(auto q = samples.rbegin(); q != samples.rend(); ++q)
     {
-      const double se = which == 0 ? q.se_H : q.se_K, value = which == 0 ? q.H : q.K;
+      const double se = which == 0 ? q->se_H : q->se_K, value = which == 0 ? q->H : q->K;
       if(!(se > 0) || !std::isfinite(se) || !std::isfinite(value))
         continue;
-      line.add((q.radius / r_max) * (q.radius / r_max), value, 1 / (se * se));
+      const double x = (q->radius / reference) * (q->radius / reference), variance = se * se;
+      double w = 1 / variance, y = value;
+      std::array<double, 3> basis = {1, x, x * x};
+      if(count > 0)
+      {
+        w = 1 / (std::max)(variance - larger_variance, least_variance_share * variance);
+        y = value - larger_value;
+        basis = {0, x - larger_x, x * x - larger_x * larger_x};
+      }
+      if(every_radius)
+      {
+        line.add({basis[0], basis[1]}, y, w);
+        parabola.add(basis, y, w);
+      }
+      else
+        line.add({1, x}, value, 1 / variance);
+      larger_x = x;
+      larger_value = value;
+      larger_variance = variance;
+      ++count;
     }
-    if(!(line.determinant() > 1e-12 * line.w0 * line.w2))
-      continue;
-    const double c = line.slope();  // per (r / r_max)^2
-    const double r4 = r_max * r_max * r_max * r_max;
-    (which == 0 ? rates.excess_H : rates.excess_K) = (c * c - line.w0 / line.determinant()) / r4;
+    Bias_moments& m = which == 0 ? rates.H : rates.K;
+    std::array<double, 2> ab;
+    double v2[2][2];
+    if(count >= 2 && line.solve(ab, v2))
+      m.line = ab[1] * ab[1] - v2[1][1];
+    std::array<double, 3> abc;
+    double v3[3][3];
+    if(every_radius && count >= 3 && parabola.solve(abc, v3))
+      m.parabola = {abc[1] * abc[1] - v3[1][1], abc[1] * abc[2] - v3[1][2], abc[2] * abc[2] - v3[2][2], v3[2][2]};
   }
   return rates;
 }
@@ -521,6 +673,9 @@ public:
   // The length within which pool_bias_rates() averages.
   double bias_pooling_radius() const { return m_bias_pooling_radius; }
 
+  // The unit of the bias rates' radii: the largest radius fitted.
+  double bias_reference_radius() const { return m_radii.empty() ? 1 : m_radii.back(); }
+
   // The estimates at vertex v, one per rule, into out[0, rules.size()),
   // their uncertainty the noise's only; the bias rates of the fits at v
   // into `rates` if given.
@@ -777,13 +932,13 @@ private:
       const Radius_fit& q = ws.fits[j];
       if(!q.defined || !(q.error.per_noise > 0))
         continue;
-      const double noise = fit_noise(q.error, m_sample_noise);
+      const Estimate_uncertainty u =
+        fit_uncertainty(q.error, m_radii[j], m_sample_noise, m_smoothing, Residual_degrees::COUNTED);
       ws.samples.push_back(Radius_sample{m_radii[j], (q.curvature.k1 + q.curvature.k2) / 2,
-                                         q.curvature.k1 * q.curvature.k2, noise * q.error.per_noise,
-                                         noise * q.error.per_noise_K});
+                                         q.curvature.k1 * q.curvature.k2, u.H, u.K});
     }
     if(rates)
-      *rates = bias_rates(ws.samples);
+      *rates = bias_rates(ws.samples, bias_reference_radius(), ws.samples.size() == m_radii.size());
     std::vector<std::size_t> to_widen;
     for(std::size_t r = 0; r < m_rules.size(); ++r)
     {
@@ -923,7 +1078,7 @@ void estimate_in_one_pass(const Vertex_graph& graph, const std::vector<Vec3>& no
   const std::vector<double> reach(1, estimation.bias_pooling_radius());
   for_each_index<ConcurrencyTag>(graph.size(), [&]() { return Nested_neighborhood_search(graph.size()); },
     [&](std::size_t v, Nested_neighborhood_search& search) {
-      const Bias_widening bias = pool_bias_rates(graph, rates, v, reach, search);
+      const Bias_widening bias = pool_bias_rates(graph, rates, v, reach, estimation.bias_reference_radius(), search);
       for(std::size_t r = 0; r < rules.size(); ++r)
         if(rules[r].radius > 0 || !rules[r].candidates.empty())
           widen(r, v, bias);
