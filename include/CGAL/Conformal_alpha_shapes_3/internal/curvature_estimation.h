@@ -284,69 +284,29 @@ template <int n>
 class Weighted_polynomial_fit
 {
 public:
-  void add(const std::array<double, n>& basis, double y, double w)
+  typedef Eigen::Matrix<double, n, 1> Vector;
+  typedef Eigen::Matrix<double, n, n> Matrix;
+
+  void add(const Vector& basis, double y, double w)
   {
-    for(int i = 0; i < n; ++i)
-    {
-      m_b[i] += w * basis[i] * y;
-      for(int j = 0; j < n; ++j)
-        m_a[i][j] += w * basis[i] * basis[j];
-    }
+    m_a += w * basis * basis.transpose();
+    m_b += (w * y) * basis;
   }
 
   // The coefficients and their covariance (the inverse of the normal
   // equations); false where these are singular.
-  bool solve(std::array<double, n>& coefficient, double covariance[n][n]) const
+  bool solve(Vector& coefficient, Matrix& covariance) const
   {
-    if(!invert(covariance))
+    if(!(m_a.determinant() > 1e-12 * m_a.diagonal().prod()))
       return false;
-    for(int i = 0; i < n; ++i)
-    {
-      coefficient[std::size_t(i)] = 0;
-      for(int j = 0; j < n; ++j)
-        coefficient[std::size_t(i)] += covariance[i][j] * m_b[j];
-    }
+    covariance = m_a.inverse();
+    coefficient = covariance * m_b;
     return true;
   }
 
 private:
-  bool invert(double inverse[n][n]) const
-  {
-    double scale = 1;
-    for(int i = 0; i < n; ++i)
-      scale *= m_a[i][i];
-    if constexpr(n == 2)
-    {
-      const double det = m_a[0][0] * m_a[1][1] - m_a[0][1] * m_a[1][0];
-      if(!(det > 1e-12 * scale))
-        return false;
-      inverse[0][0] = m_a[1][1] / det;
-      inverse[1][1] = m_a[0][0] / det;
-      inverse[0][1] = inverse[1][0] = -m_a[0][1] / det;
-      return true;
-    }
-    // the adjugate over the determinant
-    const auto& a = m_a;
-    double cofactor[n][n];
-    for(int i = 0; i < n; ++i)
-      for(int j = 0; j < n; ++j)
-      {
-        const int i1 = (i + 1) % n, i2 = (i + 2) % n, j1 = (j + 1) % n, j2 = (j + 2) % n;
-        cofactor[i][j] = a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1];
-      }
-    double det = 0;
-    for(int j = 0; j < n; ++j)
-      det += a[0][j] * cofactor[0][j];
-    if(!(det > 1e-12 * scale))
-      return false;
-    for(int i = 0; i < n; ++i)
-      for(int j = 0; j < n; ++j)
-        inverse[i][j] = cofactor[j][i] / det;
-    return true;
-  }
-
-  double m_a[n][n] = {};
-  double m_b[n] = {};
+  Matrix m_a = Matrix::Zero();
+  Vector m_b = Vector::Zero();
 };
 
 // The bias rates at one vertex from its fits at increasing radii. Under
@@ -378,34 +338,34 @@ inline Bias_rates bias_rates(const std::vector<Radius_sample>& samples, double r
         continue;
       const double x = (q->radius / reference) * (q->radius / reference), variance = se * se;
       double w = 1 / variance, y = value;
-      std::array<double, 3> basis = {1, x, x * x};
+      Eigen::Vector3d basis(1, x, x * x);
       if(count > 0)
       {
         w = 1 / (std::max)(variance - larger_variance, least_variance_share * variance);
         y = value - larger_value;
-        basis = {0, x - larger_x, x * x - larger_x * larger_x};
+        basis = Eigen::Vector3d(0, x - larger_x, x * x - larger_x * larger_x);
       }
       if(every_radius)
       {
-        line.add({basis[0], basis[1]}, y, w);
+        line.add(basis.head<2>(), y, w);
         parabola.add(basis, y, w);
       }
       else
-        line.add({1, x}, value, 1 / variance);
+        line.add(Eigen::Vector2d(1, x), value, 1 / variance);
       larger_x = x;
       larger_value = value;
       larger_variance = variance;
       ++count;
     }
     Bias_moments& m = which == 0 ? rates.H : rates.K;
-    std::array<double, 2> ab;
-    double v2[2][2];
+    Eigen::Vector2d ab;
+    Eigen::Matrix2d v2;
     if(count >= 2 && line.solve(ab, v2))
-      m.line = ab[1] * ab[1] - v2[1][1];
-    std::array<double, 3> abc;
-    double v3[3][3];
+      m.line = ab(1) * ab(1) - v2(1, 1);
+    Eigen::Vector3d abc;
+    Eigen::Matrix3d v3;
     if(every_radius && count >= 3 && parabola.solve(abc, v3))
-      m.parabola = {abc[1] * abc[1] - v3[1][1], abc[1] * abc[2] - v3[1][2], abc[2] * abc[2] - v3[2][2], v3[2][2]};
+      m.parabola = {abc(1) * abc(1) - v3(1, 1), abc(1) * abc(2) - v3(1, 2), abc(2) * abc(2) - v3(2, 2), v3(2, 2)};
   }
   return rates;
 }
