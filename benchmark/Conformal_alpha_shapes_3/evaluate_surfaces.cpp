@@ -6,7 +6,8 @@
 //   evaluate_surfaces [--case NAME,...] [--sizes 20000,100000] [--large]
 //                     [--noise 0,0.1,0.3] [--neighborhoods LIST] [--rings 1,2,3]
 //                     [--normals] [--scale-factor 1] [--jet-samples 5000] [--no-jet]
-//                     [--data DIR] [--csv FILE] [--write-points DIR] [--list] [--check-truth] [--help]
+//                     [--data DIR] [--csv FILE] [--write-points DIR] [--list] [--check-truth]
+//                     [--calibration] [--reference-draws N] [--help]
 //
 // Neighborhoods of the curvature fit (--neighborhoods, default
 // auto,k1,k2,k3,2s,4s,8s,16s): k2 a ring size, auto the automatic radius
@@ -59,6 +60,13 @@
 // and its truth, the true normal, H and K of each point, as
 // DIR/NAME_N_NOISE_truth.txt (the manual's bump figures are made from
 // dent_bumps_20000_0.xyz).
+// --calibration prints, per synthetic sample and layer, how the reported
+// uncertainties match the errors (calibration()); --reference-draws N adds,
+// on noisy samples, a `reference` line scored the same way with each
+// point's standard uncertainty measured rather than estimated: the root
+// mean square of the layer's errors there over N other noise draws of the
+// same points. On a clean sample the error is fixed by the sample, and its
+// own size is that reference.
 #include <CGAL/Conformal_alpha_shapes_3/multiscale_curvatures.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -280,6 +288,20 @@ double top_tenth_ratio(std::vector<std::pair<double, double> > pairs)
   return quantile(largest, 0.5) / quantile(rest, 0.5);
 }
 
+// The absolute errors of H and K at point i of a layer; false where the
+// layer has no value there. H takes the sign that agrees with the truth
+// (open surfaces may be flipped).
+bool point_errors(const Layer& layer, const Sample& truth, const Judge& judge, std::size_t i, double& e_H,
+                  double& e_K)
+{
+  if(!std::isfinite(layer.H[i]) || !std::isfinite(layer.normal[i].x()))
+    return false;
+  const double sign = judge.flip_allowed && layer.normal[i] * truth.normals[i] < 0 ? -1 : 1;
+  e_H = std::abs(sign * layer.H[i] - truth.mean_curvature[i]);
+  e_K = std::abs(layer.K[i] - truth.gaussian_curvature[i]);
+  return true;
+}
+
 Calibration calibration(const Layer& layer, const Sample& truth, const Judge& judge)
 {
   Calibration c;
@@ -291,12 +313,9 @@ Calibration calibration(const Layer& layer, const Sample& truth, const Judge& ju
   std::vector<std::pair<double, double> > by_relative, relative_by_relative;
   for(std::size_t i = 0; i < layer.H.size(); ++i)
   {
-    if(!std::isfinite(layer.H[i]) || !std::isfinite(layer.H_sigma[i]) || !std::isfinite(layer.normal[i].x()))
+    double e_H = 0, e_K = 0;
+    if(!std::isfinite(layer.H_sigma[i]) || !point_errors(layer, truth, judge, i, e_H, e_K))
       continue;
-    // the sign that agrees with the truth (open surfaces may be flipped)
-    const double sign = judge.flip_allowed && layer.normal[i] * truth.normals[i] < 0 ? -1 : 1;
-    const double e_H = std::abs(sign * layer.H[i] - truth.mean_curvature[i]);
-    const double e_K = std::abs(layer.K[i] - truth.gaussian_curvature[i]);
     eH.push_back(e_H);
     eK.push_back(e_K);
     sH.push_back(layer.H_sigma[i]);
@@ -448,6 +467,7 @@ struct Options
   bool large = false, normals = false, jet = true, calibration = false;
   double scale_factor = 1;
   std::size_t jet_samples = 5000;
+  std::size_t reference_draws = 0;
   std::string data = CAS3_TEST_DATA;
   std::string csv;
   std::string write_points;  // a folder, or empty
@@ -536,11 +556,58 @@ Judge judge_of(const Sample& s, bool planar, bool flip_allowed)
   return j;
 }
 
+// The calibration of a layer, one line, `kind` naming whose sigmas.
+void print_calibration(const char* kind, const std::string& name, std::size_t n, double noise, const Layer& layer,
+                       const Sample& truth, const Judge& judge)
+{
+  const Calibration c = calibration(layer, truth, judge);
+  std::printf("%-11s %-10s %6zu %5s %-5s H within 2 sigma %5.1f%%  K %5.1f%%  median sigma/error H %5.2f"
+              "  K %5.2f  top-10%% sigma error ratio %5.2f (relative errors %5.2f)  median sigma/|H| %7.3f"
+              "  noise part H %5.2f\n",
+              kind, name.c_str(), n, noise_label(noise).c_str(), layer.label.c_str(), 100 * c.H_within,
+              100 * c.K_within, c.H_ratio, c.K_ratio, c.ranking, c.relative_ranking, c.relative, c.H_noise_ratio);
+}
+
+// `layers` with each point's standard uncertainty measured: the root mean
+// square of the layer's errors there over `draws`, other noise draws of the
+// same sample (--reference-draws); NaN where no draw has a value.
+std::vector<Layer> reference_sigmas(std::vector<Layer> layers, const std::vector<Sample>& draws, const Sample& truth,
+                                    const Judge& judge, const Options& o)
+{
+  const std::size_t n = truth.points.size();
+  std::vector<std::vector<double> > sum_H(layers.size(), std::vector<double>(n, 0)), sum_K = sum_H, count = sum_H;
+  for(const Sample& draw : draws)
+  {
+    const std::vector<Layer> values =
+      run_pipeline(draw.points, o.normals ? draw.normals : std::vector<Vector>(), o.neighborhoods, o.scale_factor);
+    for(std::size_t k = 0; k < values.size(); ++k)
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        double e_H = 0, e_K = 0;
+        if(!point_errors(values[k], truth, judge, i, e_H, e_K))
+          continue;
+        sum_H[k][i] += e_H * e_H;
+        sum_K[k][i] += e_K * e_K;
+        count[k][i] += 1;
+      }
+  }
+  for(std::size_t k = 0; k < layers.size(); ++k)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double c = count[k][i];
+      layers[k].H_sigma[i] = c > 0 ? std::sqrt(sum_H[k][i] / c) : nan_value;
+      layers[k].K_sigma[i] = c > 0 ? std::sqrt(sum_K[k][i] / c) : nan_value;
+      layers[k].H_noise_sigma[i] = layers[k].H_sigma[i];
+    }
+  return layers;
+}
+
 // Runs the pipeline and the peer on `s`, one row per truth in `truths`
 // (the first is the sample itself), the peer with the k of `jet_ks[t]`.
 void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truths,
                         const std::vector<std::string>& names, const std::vector<std::vector<int> >& jet_ks,
-                        bool planar, double noise, const Options& o, std::vector<Row>& rows, std::ostream* csv)
+                        bool planar, double noise, const Options& o, std::vector<Row>& rows, std::ostream* csv,
+                        const std::vector<Sample>& draws = std::vector<Sample>())
 {
   if(!o.write_points.empty())
   {
@@ -583,18 +650,13 @@ void evaluate_synthetic(const Sample& s, const std::vector<const Sample*>& truth
     row.seconds = seconds;
     row.note = failure;
     double best = std::numeric_limits<double>::infinity();
+    if(o.calibration && t == 0 && !draws.empty() && !layers.empty())
+      for(const Layer& layer : reference_sigmas(layers, draws, truth, judge, o))
+        print_calibration("reference", names[t], s.points.size(), noise, layer, truth, judge);
     for(const Layer& layer : layers)
     {
       if(o.calibration)
-      {
-        const Calibration c = calibration(layer, truth, judge);
-        std::printf("calibration %-10s %6zu %5s %-5s H within 2 sigma %5.1f%%  K %5.1f%%  median sigma/error H %5.2f"
-                    "  K %5.2f  top-10%% sigma error ratio %5.2f (relative errors %5.2f)  median sigma/|H| %7.3f"
-                    "  noise part H %5.2f\n",
-                    names[t].c_str(), s.points.size(), noise_label(noise).c_str(), layer.label.c_str(),
-                    100 * c.H_within, 100 * c.K_within, c.H_ratio, c.K_ratio, c.ranking, c.relative_ranking,
-                    c.relative, c.H_noise_ratio);
-      }
+        print_calibration("calibration", names[t], s.points.size(), noise, layer, truth, judge);
       const Accuracy a = accuracy(layer.normal, layer.H, layer.K, all, truth, judge);
       row.layers += (row.layers.empty() ? "" : " ") + layer.label + ":" + error(a.H_med, planar);
       if(row.components < 0)
@@ -859,6 +921,7 @@ int main(int argc, char* argv[])
       }
       else if(arg == "--scale-factor" && value) o.scale_factor = std::stod(argv[++i]);
       else if(arg == "--jet-samples" && value) o.jet_samples = std::stoul(argv[++i]);
+      else if(arg == "--reference-draws" && value) o.reference_draws = std::stoul(argv[++i]);
       else if(arg == "--data" && value) o.data = argv[++i];
       else if(arg == "--csv" && value) o.csv = argv[++i];
       else if(arg == "--write-points" && value) o.write_points = argv[++i];
@@ -873,6 +936,7 @@ int main(int argc, char* argv[])
                      "                  [--neighborhoods auto,k1,k2,k3,2s,4s,8s,16s] [--rings 1,2,3] [--normals]\n"
                      "                  [--scale-factor 1] [--jet-samples 5000] [--no-jet] [--data DIR] [--csv FILE]\n"
                      "                  [--write-points DIR] [--list] [--check-truth] [--calibration]\n"
+                     "                  [--reference-draws N]\n"
                      "neighborhoods: k2 ring size, auto, 4s spacings, 0.01 model units (see evaluate_surfaces.cpp)\n";
         return EXIT_SUCCESS;
       }
@@ -942,7 +1006,13 @@ int main(int argc, char* argv[])
         else
           cas3_analytic::add_normal_noise(s, r, seed);
         const std::vector<int> ks = r > 0 ? std::vector<int>{60, 120, 240, 480} : std::vector<int>{12, 24};
-        evaluate_synthetic(s, {&s}, {shape.name}, {ks}, shape.planar, r, o, rows, csv);
+        std::vector<Sample> draws;
+        for(std::size_t m = 1; o.calibration && r > 0 && m <= o.reference_draws; ++m)
+        {
+          draws.push_back(clean);
+          cas3_analytic::add_normal_noise(draws.back(), r, seed + unsigned(7919 * m));
+        }
+        evaluate_synthetic(s, {&s}, {shape.name}, {ks}, shape.planar, r, o, rows, csv, draws);
       }
     }
   }
