@@ -494,6 +494,14 @@ std::vector<T> parse_list(const std::string& text)
   return v;
 }
 
+// A count given on the command line: digits only.
+std::size_t parse_count(const std::string& text)
+{
+  if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9)
+    throw std::invalid_argument("bad count '" + text + "'");
+  return std::stoul(text);
+}
+
 std::string join(const std::vector<std::string>& v)
 {
   std::string s;
@@ -920,8 +928,8 @@ int main(int argc, char* argv[])
         for(int k : parse_list<int>(argv[++i])) o.neighborhoods.push_back("k" + std::to_string(k));
       }
       else if(arg == "--scale-factor" && value) o.scale_factor = std::stod(argv[++i]);
-      else if(arg == "--jet-samples" && value) o.jet_samples = std::stoul(argv[++i]);
-      else if(arg == "--reference-draws" && value) o.reference_draws = std::stoul(argv[++i]);
+      else if(arg == "--jet-samples" && value) o.jet_samples = parse_count(argv[++i]);
+      else if(arg == "--reference-draws" && value) o.reference_draws = parse_count(argv[++i]);
       else if(arg == "--data" && value) o.data = argv[++i];
       else if(arg == "--csv" && value) o.csv = argv[++i];
       else if(arg == "--write-points" && value) o.write_points = argv[++i];
