@@ -578,7 +578,8 @@ void print_calibration(const char* kind, const std::string& name, std::size_t n,
 
 // `layers` with each point's standard uncertainty measured: the root mean
 // square of the layer's errors there over `draws`, other noise draws of the
-// same sample (--reference-draws); NaN where no draw has a value.
+// same sample (--reference-draws); NaN where no draw has a value. A draw
+// whose pipeline fails is left out, with a message.
 std::vector<Layer> reference_sigmas(std::vector<Layer> layers, const std::vector<Sample>& draws, const Sample& truth,
                                     const Judge& judge, const Options& o)
 {
@@ -586,8 +587,16 @@ std::vector<Layer> reference_sigmas(std::vector<Layer> layers, const std::vector
   std::vector<std::vector<double> > sum_H(layers.size(), std::vector<double>(n, 0)), sum_K = sum_H, count = sum_H;
   for(const Sample& draw : draws)
   {
-    const std::vector<Layer> values =
-      run_pipeline(draw.points, o.normals ? draw.normals : std::vector<Vector>(), o.neighborhoods, o.scale_factor);
+    std::vector<Layer> values;
+    try
+    {
+      values = run_pipeline(draw.points, o.normals ? draw.normals : std::vector<Vector>(), o.neighborhoods,
+                            o.scale_factor);
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << "evaluate_surfaces: a reference draw left out, the pipeline failed: " << e.what() << "\n";
+    }
     for(std::size_t k = 0; k < values.size(); ++k)
       for(std::size_t i = 0; i < n; ++i)
       {
