@@ -578,8 +578,9 @@ void print_calibration(const char* kind, const std::string& name, std::size_t n,
 
 // `layers` with each point's standard uncertainty measured: the root mean
 // square of the layer's errors there over `draws`, other noise draws of the
-// same sample (--reference-draws); NaN where no draw has a value. A draw
-// whose pipeline fails is left out, with a message.
+// same sample (--reference-draws); NaN where no draw has a value. Its
+// "noise part" is all of it, noise and bias being measured together. A
+// draw whose pipeline fails is left out, with a message.
 std::vector<Layer> reference_sigmas(std::vector<Layer> layers, const std::vector<Sample>& draws, const Sample& truth,
                                     const Judge& judge, const Options& o)
 {
